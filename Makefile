@@ -1,0 +1,182 @@
+# shadecalc — build, test, run, benchmark, install.
+#
+#   make run      build, then the main job (a tour of what shadecalc computes)
+#   make check    build, then every test: unit, end-to-end, sanitizers, fuzz smoke
+#
+# Sources are found by folder, so a new file needs no edit here:
+#   src/**/*.c         the library (src/cli/ excluded)
+#   src/simd/avx2/     compiled with -mavx2 -mfma -mf16c   (x86-64 only)
+#   src/simd/sse41/    compiled with -msse4.1              (x86-64 only)
+#   src/cli/*.c        the shadecalc binary; src/cli/cmd_NAME.c is subcommand NAME
+#   tests/unit/test_*.c   one cmocka binary each, linked with tests/support/*.c
+#   tests/e2e/test_*.sh   end-to-end tests of the binary
+#   tests/fuzz/fuzz_*.c   libFuzzer harnesses (built with clang)
+#   bench/*.c          standalone programs, one main each
+
+VERSION   := 0.1.0
+SOVERSION := 0
+PREFIX    ?= /usr/local
+DESTDIR   ?=
+
+CC       ?= cc
+CCNAME   := $(notdir $(firstword $(CC)))
+ifeq ($(CCNAME),cc)
+BUILD    ?= build
+else
+BUILD    ?= build-$(CCNAME)
+endif
+
+WARN     := -std=c11 -Wall -Wextra -Wpedantic -Werror
+OPT      ?= -O2 -g
+# FMA only where written (fma(), intrinsics): both compilers give the same bits.
+FPFLAGS  := -ffp-contract=off
+CPPFLAGS += -Iinclude -Isrc -I$(BUILD)/gen -D_POSIX_C_SOURCE=200809L -DSC_VERSION=\"$(VERSION)\"
+ifeq ($(SAN),1)
+SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+endif
+ALLCFLAGS = $(WARN) $(OPT) $(FPFLAGS) -fPIC -pthread $(SANFLAGS) $(CFLAGS)
+EXR_LIBS  = $(shell pkg-config --libs-only-l OpenEXR 2>/dev/null | tr ' ' '\n' | grep OpenEXRCore)
+LDLIBS   += $(EXR_LIBS) -lm -lpthread
+LDALL     = $(SANFLAGS) -pthread $(LDFLAGS)
+
+ARCH := $(shell uname -m)
+ifneq ($(filter x86_64 amd64 i686 i386,$(ARCH)),)
+$(BUILD)/obj/src/simd/avx2/%.o: ISAFLAGS := -mavx2 -mfma -mf16c
+$(BUILD)/obj/src/simd/sse41/%.o: ISAFLAGS := -msse4.1
+endif
+
+LIB_SRCS   := $(sort $(shell find src -name '*.c' ! -path 'src/cli/*'))
+CLI_SRCS   := $(sort $(wildcard src/cli/*.c))
+CMD_SRCS   := $(sort $(wildcard src/cli/cmd_*.c))
+SUP_SRCS   := $(sort $(wildcard tests/support/*.c))
+UNIT_SRCS  := $(sort $(wildcard tests/unit/test_*.c))
+BENCH_SRCS := $(sort $(wildcard bench/*.c))
+FUZZ_SRCS  := $(sort $(wildcard tests/fuzz/fuzz_*.c))
+
+obj = $(patsubst %.c,$(BUILD)/obj/%.o,$(1))
+LIB_OBJS   := $(call obj,$(LIB_SRCS))
+CLI_OBJS   := $(call obj,$(CLI_SRCS))
+SUP_OBJS   := $(call obj,$(SUP_SRCS))
+UNIT_BINS  := $(patsubst tests/unit/%.c,$(BUILD)/tests/%,$(UNIT_SRCS))
+BENCH_BINS := $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRCS))
+
+STATIC := $(BUILD)/libshadecalc.a
+SHARED := $(BUILD)/libshadecalc.so.$(VERSION)
+SONAME := libshadecalc.so.$(SOVERSION)
+BIN    := $(BUILD)/shadecalc
+
+.PHONY: all deps check unit e2e san fuzz run bench accuracy install uninstall format clean
+.DEFAULT_GOAL := all
+.SECONDARY:
+
+all: deps
+	@$(MAKE) --no-print-directory build-all
+
+.PHONY: build-all
+build-all: $(STATIC) $(SHARED) $(BIN) $(BENCH_BINS)
+
+deps:
+	@sh mk/deps.sh
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(ISAFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/gen/commands.h: $(CMD_SRCS) mk/gen-commands.sh
+	@mkdir -p $(dir $@)
+	sh mk/gen-commands.sh $(CMD_SRCS) > $@.tmp && mv $@.tmp $@
+
+$(CLI_OBJS): $(BUILD)/gen/commands.h
+
+$(STATIC): $(LIB_OBJS)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(SHARED): $(LIB_OBJS)
+	$(CC) -shared -Wl,-soname,$(SONAME) $(LDALL) -o $@ $^ $(LDLIBS)
+	ln -sf $(notdir $@) $(BUILD)/$(SONAME)
+	ln -sf $(SONAME) $(BUILD)/libshadecalc.so
+
+$(BIN): $(CLI_OBJS) $(STATIC)
+	$(CC) $(LDALL) -o $@ $(CLI_OBJS) $(STATIC) $(LDLIBS)
+
+$(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(SUP_OBJS) $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDALL) -o $@ $< $(SUP_OBJS) $(STATIC) -lcmocka $(LDLIBS)
+
+$(BUILD)/bench/%: $(BUILD)/obj/bench/%.o $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDALL) -o $@ $< $(STATIC) $(LDLIBS)
+
+# ---- tests -------------------------------------------------------------------
+# `check` = unit + e2e with this compiler, the same under ASan+UBSan, then the fuzz smoke.
+check: deps
+	@$(MAKE) --no-print-directory unit e2e
+	@$(MAKE) --no-print-directory SAN=1 BUILD=$(BUILD)-san unit e2e
+	@$(MAKE) --no-print-directory fuzz
+	@echo "check: all test stages passed ($(CCNAME))"
+
+unit: $(UNIT_BINS)
+	@sh tests/run-unit.sh $(UNIT_BINS)
+
+e2e: $(BIN)
+	@sh tests/e2e/run.sh $(BIN)
+
+# libFuzzer harnesses, built with clang against an instrumented copy of the library:
+# a bounded smoke run in `check`; `make fuzz FUZZ_SECONDS=600` for a long one.
+FUZZ_CC      ?= clang
+FUZZ_SECONDS ?= 10
+FUZZ_BINS    := $(patsubst tests/fuzz/%.c,build-fuzz/fuzz/%,$(FUZZ_SRCS))
+ifeq ($(FUZZ),1)
+SANFLAGS += -fsanitize=fuzzer-no-link
+endif
+
+fuzz: deps
+	@$(MAKE) --no-print-directory CC=$(FUZZ_CC) BUILD=build-fuzz SAN=1 FUZZ=1 fuzz-bins
+	@sh tests/fuzz/run.sh $(FUZZ_SECONDS) $(FUZZ_BINS)
+
+.PHONY: fuzz-bins
+fuzz-bins: $(FUZZ_BINS)
+
+build-fuzz/fuzz/%: $(BUILD)/obj/tests/fuzz/%.o $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDALL) -fsanitize=fuzzer -o $@ $< $(STATIC) $(LDLIBS)
+
+# ---- the main job, benchmarks, accuracy table ---------------------------------
+run: all
+	@sh mk/tour.sh $(BIN)
+
+bench: all
+	@sh mk/bench.sh $(BUILD)
+
+accuracy: all
+	$(BUILD)/bench/accuracy_table
+
+# ---- install -----------------------------------------------------------------
+LIBDIR := $(DESTDIR)$(PREFIX)/lib
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/include/shadecalc $(LIBDIR)/pkgconfig \
+	    $(DESTDIR)$(PREFIX)/share/man/man1
+	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/shadecalc
+	install -m 644 include/shadecalc/*.h $(DESTDIR)$(PREFIX)/include/shadecalc/
+	install -m 644 $(STATIC) $(LIBDIR)/
+	install -m 755 $(SHARED) $(LIBDIR)/
+	ln -sf libshadecalc.so.$(VERSION) $(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(LIBDIR)/libshadecalc.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@EXR@|$(EXR_LIBS)|' \
+	    mk/shadecalc.pc.in > $(LIBDIR)/pkgconfig/shadecalc.pc
+	install -m 644 man/shadecalc.1 $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/bin/shadecalc $(LIBDIR)/libshadecalc.a \
+	    $(LIBDIR)/libshadecalc.so $(LIBDIR)/$(SONAME) $(LIBDIR)/libshadecalc.so.$(VERSION) \
+	    $(LIBDIR)/pkgconfig/shadecalc.pc $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1
+	rm -rf $(DESTDIR)$(PREFIX)/include/shadecalc
+
+format:
+	clang-format -i $$(find src include tests bench -name '*.[ch]')
+
+clean:
+	rm -rf build build-* 
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,0 +1,2 @@
+build/obj/src/precision.o: src/precision.c include/shadecalc/precision.h
+include/shadecalc/precision.h:

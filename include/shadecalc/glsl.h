@@ -1,0 +1,53 @@
+/*
+ * shadecalc/glsl.h — the GLSL ES 3.00 scalar built-ins in highp (binary32), accurate tier.
+ *
+ * angle and trigonometry   sc_radiansf sc_degreesf sc_sinf sc_cosf sc_tanf sc_asinf sc_acosf
+ *                          sc_atanf (y_over_x) sc_atan2f (y, x)
+ * exponential              sc_powf sc_expf sc_logf sc_exp2f sc_log2f sc_sqrtf sc_inversesqrtf
+ * common                   sc_absf sc_signf sc_floorf sc_ceilf sc_fractf sc_modf sc_minf sc_maxf
+ *                          sc_clampf sc_mixf sc_stepf sc_smoothstepf
+ *
+ * Semantics are GLSL ES 3.00 §8 (SPEC §9): mod(x,y) = x - y*floor(x/y) takes the sign of y;
+ * sign(±0) = 0; step(e,e) = 1; clamp = min(max(x,lo),hi). Where GLSL ES leaves an input
+ * undefined, each function returns the IEEE result of its formula and says which in its
+ * comment.
+ *
+ * Each transcendental states its worst-case error against the double-precision reference over
+ * a stated domain in its source file's first comment; tests/unit/test_math_accuracy.c checks
+ * every stated bound on >= 10^6 inputs.
+ */
+#ifndef SHADECALC_GLSL_H
+#define SHADECALC_GLSL_H
+
+float sc_radiansf(float degrees);
+float sc_degreesf(float radians);
+float sc_sinf(float x);
+float sc_cosf(float x);
+float sc_tanf(float x);
+float sc_asinf(float x);
+float sc_acosf(float x);
+float sc_atanf(float y_over_x);
+float sc_atan2f(float y, float x);
+
+float sc_powf(float x, float y);
+float sc_expf(float x);
+float sc_logf(float x);
+float sc_exp2f(float x);
+float sc_log2f(float x);
+float sc_sqrtf(float x);
+float sc_inversesqrtf(float x);
+
+float sc_absf(float x);
+float sc_signf(float x);
+float sc_floorf(float x);
+float sc_ceilf(float x);
+float sc_fractf(float x);
+float sc_modf(float x, float y);
+float sc_minf(float x, float y);
+float sc_maxf(float x, float y);
+float sc_clampf(float x, float lo, float hi);
+float sc_mixf(float x, float y, float a);
+float sc_stepf(float edge, float x);
+float sc_smoothstepf(float edge0, float edge1, float x);
+
+#endif

@@ -1,0 +1,44 @@
+/* The shadecalc command line: subcommand table, exit codes, shared helpers. */
+#ifndef SHADECALC_CLI_H
+#define SHADECALC_CLI_H
+
+#include <stdio.h>
+
+/* Exit status of every subcommand. */
+enum { SC_EXIT_OK = 0, SC_EXIT_RUNTIME = 1, SC_EXIT_USAGE = 2 };
+
+/* A subcommand: src/cli/cmd_NAME.c defines `const sc_command sc_cmd_NAME`. run() gets argv with
+ * argv[0] = the subcommand's name and returns an exit status. */
+typedef struct {
+    const char *name;
+    const char *summary; /* one line for `shadecalc --help` */
+    int (*run)(int argc, char **argv);
+} sc_command;
+
+/* "error: <message>" on stderr (printf-style, newline added). */
+void sc_error(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+/* "warning: <message>" on stderr. */
+void sc_warning(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+/* Reports a getopt_long failure for subcommand cmd (unknown option, missing argument) and
+ * returns SC_EXIT_USAGE. Call with the argv and the optopt of the failed getopt_long call. */
+int sc_usage_error(const char *cmd, char **argv, int optopt);
+
+/* Resets getopt for a fresh parse (each subcommand parses its own argv). */
+void sc_getopt_reset(void);
+
+/* Strict number parsing: the whole string must be a number. Returns 0 on success, -1 if not. */
+int sc_parse_double(const char *s, double *out);
+int sc_parse_long(const char *s, long *out);
+/* A comma list of exactly n numbers ("1,2,3"); returns 0 on success. */
+int sc_parse_doubles(const char *s, double *out, int n);
+
+#endif

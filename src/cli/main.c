@@ -1,0 +1,42 @@
+/* shadecalc: dispatch to the subcommand named by argv[1]. */
+#include "cli/cli.h"
+
+#include <string.h>
+
+#include "commands.h"
+
+static const sc_command *const commands[] = {SC_COMMANDS NULL};
+static const int command_count = (int)(sizeof commands / sizeof commands[0]) - 1;
+
+static void print_help(FILE *out)
+{
+    fprintf(out, "usage: shadecalc COMMAND [OPTIONS] [ARGS]\n\n"
+                 "Lighting equations and GLSL ES built-ins, evaluated, swept and benchmarked.\n\n"
+                 "commands:\n");
+    for (int i = 0; i < command_count; i++)
+        fprintf(out, "  %-8s %s\n", commands[i]->name, commands[i]->summary);
+    fprintf(out, "\n'shadecalc COMMAND --help' describes a command; 'man shadecalc' all of them.\n"
+                 "Exit status: 0 ok, 1 runtime error, 2 usage error.\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        print_help(stderr);
+        return SC_EXIT_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        strcmp(argv[1], "help") == 0) {
+        print_help(stdout);
+        return SC_EXIT_OK;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("shadecalc %s\n", SC_VERSION);
+        return SC_EXIT_OK;
+    }
+    for (int i = 0; i < command_count; i++)
+        if (strcmp(argv[1], commands[i]->name) == 0)
+            return commands[i]->run(argc - 1, argv + 1);
+    sc_error("unknown command '%s' (see 'shadecalc --help')", argv[1]);
+    return SC_EXIT_USAGE;
+}

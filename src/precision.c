@@ -1,0 +1,135 @@
+/* Precision emulation: binary16 and lowp rounding, ULP measure, shortest decimals (SPEC §9). */
+#include "shadecalc/precision.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const prec_names[] = {"double", "highp", "mediump", "lowp"};
+
+int sc_prec_parse(const char *name, sc_prec *out)
+{
+    for (int i = 0; i < 4; i++) {
+        if (strcmp(name, prec_names[i]) == 0) {
+            *out = (sc_prec)i;
+            return 0;
+        }
+    }
+    return -1;
+}
+
+const char *sc_prec_name(sc_prec p) { return prec_names[p]; }
+
+/* binary16: 1 sign, 5 exponent (bias 15), 10 fraction bits; largest finite 65504. */
+uint16_t sc_half_from_double(double x)
+{
+    uint16_t sign = signbit(x) ? 0x8000 : 0;
+    double a = fabs(x);
+    if (isnan(x))
+        return sign | 0x7e00;
+    /* 65520 is halfway between 65504 and 2^16: ties to even round it up, to infinity. */
+    if (a >= 65520.0)
+        return sign | 0x7c00;
+    if (a < 0x1p-14) /* subnormal or zero: a multiple of 2^-24, exact scaling then RNE */
+        return sign | (uint16_t)rint(a * 0x1p24);
+    int e;
+    frexp(a, &e);
+    e -= 1; /* a = m * 2^e with m in [1, 2) */
+    double q = rint(ldexp(a, 10 - e)); /* 11-bit significand in [1024, 2048] */
+    if (q == 2048.0) {
+        q = 1024.0;
+        e += 1;
+    }
+    if (e > 15)
+        return sign | 0x7c00;
+    return sign | (uint16_t)((e + 15) << 10) | (uint16_t)(q - 1024.0);
+}
+
+double sc_half_to_double(uint16_t h)
+{
+    int e = (h >> 10) & 0x1f;
+    int f = h & 0x3ff;
+    double v;
+    if (e == 0x1f)
+        v = f ? NAN : INFINITY;
+    else if (e == 0)
+        v = ldexp(f, -24);
+    else
+        v = ldexp(f + 1024, e - 25);
+    return (h & 0x8000) ? -v : v;
+}
+
+double sc_round_half(double x) { return sc_half_to_double(sc_half_from_double(x)); }
+
+double sc_round_lowp(double x)
+{
+    if (isnan(x))
+        return x;
+    double k = rint(fmax(fmin(x, 2.0), -2.0) * 256.0);
+    k = fmax(fmin(k, 511.0), -511.0);
+    return k / 256.0;
+}
+
+double sc_round(sc_prec p, double x)
+{
+    switch (p) {
+    case SC_HIGHP:
+        return (double)(float)x;
+    case SC_MEDIUMP:
+        return sc_round_half(x);
+    case SC_LOWP:
+        return sc_round_lowp(x);
+    case SC_DOUBLE:
+        break;
+    }
+    return x;
+}
+
+/* Mantissa bits (with the implicit one) and the exponent of the smallest subnormal step. */
+static void prec_format(sc_prec p, int *digits, int *min_exp)
+{
+    static const int d[] = {53, 24, 11, 0};
+    static const int m[] = {-1074, -149, -24, -8};
+    *digits = d[p];
+    *min_exp = m[p];
+}
+
+double sc_prec_ulp(sc_prec p, double x)
+{
+    if (!isfinite(x))
+        return NAN;
+    int digits, min_exp;
+    prec_format(p, &digits, &min_exp);
+    if (p == SC_LOWP || x == 0.0)
+        return ldexp(1.0, min_exp);
+    int e;
+    frexp(x, &e); /* |x| in [2^(e-1), 2^e) */
+    int ue = e - digits;
+    return ldexp(1.0, ue > min_exp ? ue : min_exp);
+}
+
+double sc_ulp_error(sc_prec p, double got, double exact)
+{
+    if (isnan(got) || isnan(exact))
+        return (isnan(got) && isnan(exact)) ? 0.0 : INFINITY;
+    if (isinf(got) || isinf(exact))
+        return got == exact ? 0.0 : INFINITY;
+    return fabs(got - exact) / sc_prec_ulp(p, exact);
+}
+
+int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
+{
+    if (isnan(x))
+        return snprintf(buf, size, "nan");
+    if (isinf(x))
+        return snprintf(buf, size, x < 0 ? "-inf" : "inf");
+    char tmp[64];
+    for (int digits = 1; digits <= 17; digits++) {
+        snprintf(tmp, sizeof tmp, "%.*g", digits, x);
+        if (sc_round(p, strtod(tmp, NULL)) == x)
+            break;
+    }
+    return snprintf(buf, size, "%s", tmp);
+}

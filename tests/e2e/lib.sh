@@ -1,0 +1,44 @@
+# Sourced by tests/e2e/test_*.sh. $SHADECALC is the binary under test.
+#
+#   expect NAME STATUS STDOUT STDERR -- ARGS...
+#       runs `shadecalc ARGS...` with no standard input and checks the exit status, the whole
+#       standard output and the whole standard error (trailing newlines ignored).
+#       STDOUT or STDERR given as '*' is not checked; '~TEXT' checks that it contains TEXT.
+#   expect_stdin NAME INPUT STATUS STDOUT STDERR -- ARGS...   the same, with INPUT on stdin.
+#
+# Each check prints 'ok NAME' or 'FAIL NAME' with a diff; the counts go to $E2E_COUNTS.
+
+e2e_tmp=$(mktemp -d)
+trap 'rm -rf "$e2e_tmp"' EXIT
+
+e2e_match() { # WHAT EXPECTED ACTUAL
+    case $2 in
+        '*') return 0 ;;
+        '~'*) case $3 in *"${2#\~}"*) return 0 ;; esac; return 1 ;;
+        *) [ "$2" = "$3" ] ;;
+    esac
+}
+
+e2e_run() { # NAME INPUT STATUS STDOUT STDERR -- ARGS...
+    name=$1 input=$2 want_status=$3 want_out=$4 want_err=$5
+    shift 6
+    printf '%s' "$input" | "$SHADECALC" "$@" >"$e2e_tmp/out" 2>"$e2e_tmp/err"
+    status=$?
+    out=$(cat "$e2e_tmp/out"); err=$(cat "$e2e_tmp/err")
+    ok=1
+    [ "$status" = "$want_status" ] || ok=0
+    e2e_match stdout "$want_out" "$out" || ok=0
+    e2e_match stderr "$want_err" "$err" || ok=0
+    if [ $ok = 1 ]; then
+        echo "ok   $name"; echo pass >>"$E2E_COUNTS"
+    else
+        echo "FAIL $name: shadecalc $*"
+        echo "  status: want $want_status, got $status"
+        echo "  stdout: want [$want_out]"; echo "          got  [$out]"
+        echo "  stderr: want [$want_err]"; echo "          got  [$err]"
+        echo fail >>"$E2E_COUNTS"
+    fi
+}
+
+expect() { n=$1; shift; e2e_run "$n" "" "$@"; }
+expect_stdin() { n=$1 i=$2; shift 2; e2e_run "$n" "$i" "$@"; }

@@ -1,0 +1,22 @@
+#!/bin/sh
+# Runs each libFuzzer harness for a bounded time, seeded from tests/fuzz/corpus/NAME/.
+set -eu
+secs=$1; shift
+pass=0
+for f in "$@"; do
+    name=$(basename "$f")
+    seeds=tests/fuzz/corpus/$name
+    work=$(mktemp -d)
+    [ -d "$seeds" ] && cp -r "$seeds/." "$work/"
+    echo "fuzz: $name for ${secs}s"
+    if ! "$f" -max_total_time="$secs" -timeout=5 -rss_limit_mb=2048 -print_final_stats=0 \
+        -artifact_prefix="build-fuzz/$name-" "$work" >"build-fuzz/$name.log" 2>&1; then
+        tail -40 "build-fuzz/$name.log" >&2
+        echo "fuzz: $name FAILED (log: build-fuzz/$name.log)" >&2
+        rm -rf "$work"
+        exit 1
+    fi
+    rm -rf "$work"
+    pass=$((pass + 1))
+done
+echo "fuzz: $pass passed, 0 failed"
