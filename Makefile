@@ -11,7 +11,8 @@
 #   tests/unit/test_*.c   one cmocka binary each, linked with tests/support/*.c
 #   tests/e2e/test_*.sh   end-to-end tests of the binary
 #   tests/fuzz/fuzz_*.c   libFuzzer harnesses (built with clang)
-#   bench/*.c          standalone programs, one main each
+#   bench/*.c          the benchmark harness, linked into the shadecalc binary
+#   bench/programs/*.c standalone programs, one main each (accuracy_table)
 
 VERSION   := 0.1.0
 SOVERSION := 0
@@ -51,14 +52,15 @@ CMD_SRCS   := $(sort $(wildcard src/cli/cmd_*.c))
 SUP_SRCS   := $(sort $(wildcard tests/support/*.c))
 UNIT_SRCS  := $(sort $(wildcard tests/unit/test_*.c))
 BENCH_SRCS := $(sort $(wildcard bench/*.c))
+PROG_SRCS  := $(sort $(wildcard bench/programs/*.c))
 FUZZ_SRCS  := $(sort $(wildcard tests/fuzz/fuzz_*.c))
 
 obj = $(patsubst %.c,$(BUILD)/obj/%.o,$(1))
 LIB_OBJS   := $(call obj,$(LIB_SRCS))
-CLI_OBJS   := $(call obj,$(CLI_SRCS))
+CLI_OBJS   := $(call obj,$(CLI_SRCS) $(BENCH_SRCS))
 SUP_OBJS   := $(call obj,$(SUP_SRCS))
 UNIT_BINS  := $(patsubst tests/unit/%.c,$(BUILD)/tests/%,$(UNIT_SRCS))
-BENCH_BINS := $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRCS))
+PROG_BINS  := $(patsubst bench/programs/%.c,$(BUILD)/bench/%,$(PROG_SRCS))
 
 STATIC := $(BUILD)/libshadecalc.a
 SHARED := $(BUILD)/libshadecalc.so.$(VERSION)
@@ -73,7 +75,7 @@ all: deps
 	@$(MAKE) --no-print-directory build-all
 
 .PHONY: build-all
-build-all: $(STATIC) $(SHARED) $(BIN) $(BENCH_BINS)
+build-all: $(STATIC) $(SHARED) $(BIN) $(PROG_BINS)
 
 deps:
 	@sh mk/deps.sh
@@ -104,7 +106,7 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(SUP_OBJS) $(STATIC)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDALL) -o $@ $< $(SUP_OBJS) $(STATIC) -lcmocka $(LDLIBS)
 
-$(BUILD)/bench/%: $(BUILD)/obj/bench/%.o $(STATIC)
+$(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDALL) -o $@ $< $(STATIC) $(LDLIBS)
 
