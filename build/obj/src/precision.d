@@ -1,2 +1,0 @@
-build/obj/src/precision.o: src/precision.c include/shadecalc/precision.h
-include/shadecalc/precision.h:
