@@ -2,6 +2,7 @@
 #include "shadecalc/precision.h"
 
 #include <float.h>
+#include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -132,4 +133,26 @@ int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
             break;
     }
     return snprintf(buf, size, "%s", tmp);
+}
+
+int sc_format_bits(char *buf, size_t size, double x, sc_prec p)
+{
+    switch (p) {
+    case SC_DOUBLE: {
+        uint64_t bits;
+        memcpy(&bits, &x, sizeof bits);
+        return snprintf(buf, size, "0x%016" PRIx64, bits);
+    }
+    case SC_HIGHP: {
+        float f = (float)x;
+        uint32_t bits;
+        memcpy(&bits, &f, sizeof bits);
+        return snprintf(buf, size, "0x%08" PRIx32, bits);
+    }
+    case SC_MEDIUMP: return snprintf(buf, size, "0x%04x", (unsigned)sc_half_from_double(x));
+    default: {
+        double k = isnan(x) ? 0.0 : x * 256.0; /* lowp has no NaN bit pattern: 0 */
+        return snprintf(buf, size, "0x%04x", (unsigned)(uint16_t)(int16_t)k);
+    }
+    }
 }

@@ -13,6 +13,7 @@
  *   sc_prec_ulp             size of one ULP of a precision at an exact value
  *   sc_ulp_error            |got - exact| in ULPs of a precision at exact
  *   sc_format_shortest      the shortest decimal that reads back to the same value in a precision
+ *   sc_format_bits          the value's bit pattern in a precision, in hexadecimal
  *
  * Every value here travels as a double: a double holds every binary32, binary16 and lowp value
  * exactly, and rounding a correctly rounded double result of + - * / sqrt to binary32 or
@@ -52,5 +53,10 @@ double sc_ulp_error(sc_prec p, double got, double exact);
 /* Writes the shortest %g-style decimal that sc_round(p, strtod(s)) maps back to x ("0.6", "-0",
  * "1e-40", "inf", "-inf", "nan"). Returns the length (as snprintf) or -1 on error. */
 int sc_format_shortest(char *buf, size_t size, double x, sc_prec p);
+
+/* Writes the bit pattern of x (a value of precision p) as hexadecimal: double 0x%016x, highp
+ * 0x%08x (binary32), mediump 0x%04x (binary16), lowp 0x%04x (the 16-bit two's complement of
+ * x·2^8). Returns the length (as snprintf). */
+int sc_format_bits(char *buf, size_t size, double x, sc_prec p);
 
 #endif
