@@ -129,7 +129,9 @@ int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
     char tmp[64];
     for (int digits = 1; digits <= 17; digits++) {
         snprintf(tmp, sizeof tmp, "%.*g", digits, x);
-        if (sc_round(p, strtod(tmp, NULL)) == x)
+        double back = strtod(tmp, NULL);
+        /* lowp saturates: a decimal beyond its range would read back only by saturation */
+        if (sc_round(p, back) == x && (p != SC_LOWP || fabs(back) <= SC_LOWP_MAX + 0x1p-9))
             break;
     }
     return snprintf(buf, size, "%s", tmp);

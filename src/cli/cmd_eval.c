@@ -189,6 +189,8 @@ static void print_json_string(FILE *out, const char *s)
         unsigned char c = (unsigned char)*s;
         if (c == '"' || c == '\\')
             fprintf(out, "\\%c", c);
+        else if (c == '\t' || c == '\n' || c == '\r')
+            fprintf(out, "\\%c", c == '\t' ? 't' : c == '\n' ? 'n' : 'r');
         else if (c < 0x20)
             fprintf(out, "\\u%04x", c);
         else

@@ -1,0 +1,70 @@
+# shadecalc eval: the examples of the issue and the man page, every output format, errors.
+. tests/e2e/lib.sh
+
+expect "normalize example"        0 'vec3(0.6, 0, 0.8)' '' -- eval 'normalize(vec3(3,0,4))'
+expect "dot type error"           2 '' 'error: column 1: dot: arguments vec3 and vec2 must have the same type' -- eval 'dot(vec3(1), vec2(1))'
+expect "several expressions"      0 '0.5
+vec2(1, 2)' '' -- eval '0.25 * 2' 'vec2(1,2)'
+expect "statements"               0 'vec2(5, 8)' '' -- eval 'a = vec4(1,2,3,4); b = a.xy * 2.; b + a.zw'
+expect "defines"                  0 '0.75' '' -- eval -D 'x=0.5' -D 'y=x*x' 'y + x'
+expect "reflect"                  0 'vec3(1, 1, 0)' '' -- eval 'reflect(vec3(1,-1,0), vec3(0,1,0))'
+expect "matrix times vector"      0 'vec2(4, 6)' '' -- eval 'mat2(1,2,3,4) * vec2(1,1)'
+expect "inverse"                  0 'mat2(-2, 1, 1.5, -0.5)' '' -- eval 'inverse(mat2(1,2,3,4))'
+expect "mod takes the sign of y"  0 'vec2(2, -2)' '' -- eval 'vec2(mod(-1., 3.), mod(1., -3.))'
+
+# precisions: the same expression in each
+expect "highp inversesqrt tiny"   0 '1.0000027e+20' '' -- eval 'inversesqrt(1e-40)'
+expect "double inversesqrt tiny"  0 '1e+20' '' -- eval --precision double 'inversesqrt(1e-40)'
+expect "mediump flushes 1e-40"    0 'inf' '~inversesqrt: x <= 0 is outside the GLSL ES domain' -- eval --precision mediump 'inversesqrt(1e-40)'
+expect "mediump rounds to half"   0 '0.3333' '' -- eval -p mediump '1.0/3.0'
+expect "lowp saturates"           0 '1.996' '' -- eval -p lowp '1.5 + 1.5'
+expect "highp shortest decimal"   0 '0.1' '' -- eval '0.1'
+expect "double shortest decimal"  0 '0.30000000000000004' '' -- eval -p double '0.1 + 0.2'
+expect "highp sum"                0 '0.3' '' -- eval '0.1 + 0.2'
+expect "negative zero kept"       0 '-0' '' -- eval -- '-0.0'
+
+# output formats
+expect "hex highp"                0 '0x3fb504f3' '' -- eval --hex 'pow(2.0, 0.5)'
+expect "hex mediump"              0 'vec2(0x3c00, 0xc000)' '' -- eval --hex -p mediump 'vec2(1, -2)'
+expect "hex double"               0 '0x3ff0000000000000' '' -- eval --hex -p double '1'
+expect "ulp exact"                0 '0.5  # ulp: 0' '' -- eval --ulp '1.0 / 2.0'
+expect "ulp mediump"              0 '1258  # ulp: 2.69' '' -- eval -p mediump --ulp 'exp2(10.3)'
+expect "json"                     0 '{"expression": "mat2(1,2,3,4) * vec2(1,1)", "precision": "highp", "type": "vec2", "value": [4, 6]}' '' -- eval --format json 'mat2(1,2,3,4) * vec2(1,1)'
+expect "json nan as string"       0 '{"expression": "log(-1.0)", "precision": "highp", "type": "float", "value": "nan"}' '*' -- eval -f json 'log(-1.0)'
+expect "json escapes"             0 '{"expression": "1.0\t+ 1.0", "precision": "highp", "type": "float", "value": 2}' '' -- eval -f json "$(printf '1.0\t+ 1.0')"
+expect "csv one type"             0 'x,y,z
+0.6,0,0.8
+1,1,1' '' -- eval --format csv 'normalize(vec3(3,0,4))' 'vec3(1)'
+expect "csv mixed types"          0 'type,c0,c1,c2
+float,1,,
+vec3,1,2,3' '' -- eval -f csv '1.0' 'vec3(1,2,3)'
+expect "csv ulp columns"          0 'value,value_ulp
+0.5,0' '' -- eval -f csv --ulp '0.5'
+expect "csv matrix columns"       0 'c0r0,c0r1,c1r0,c1r1
+1,2,3,4' '' -- eval -f csv 'mat2(1,2,3,4)'
+expect_stdin "stdin expressions" '1.0 + 1.0
+# a comment
+
+vec2(3)
+' 0 '2
+vec2(3, 3)' '' -- eval
+
+# domain: defined result and a warning, --strict makes it an error
+expect "pow domain warning"       0 'nan' 'warning: column 1: pow: x < 0 is outside the GLSL ES domain; the result is the IEEE value of its formula' -- eval 'pow(-2.0, 0.5)'
+expect "acos domain warning"      0 'nan' '~acos: |x| > 1 is outside the GLSL ES domain' -- eval 'acos(1.5)'
+expect "inversesqrt(0) warning"   0 'inf' '~inversesqrt: x <= 0' -- eval 'inversesqrt(0.0)'
+expect "strict is an error"       1 '' 'error: column 1: pow: x < 0 is outside the GLSL ES domain (--strict)' -- eval --strict 'pow(-2.0, 0.5)'
+expect "strict passes clean"      0 '2' '' -- eval --strict 'sqrt(4.0)'
+expect "warning names expression" 0 '1
+nan' '~warning: expression 2: column 12: log: x <= 0 is outside the GLSL ES domain; the result is the IEEE value of its formula' -- eval '1.0' 'log(0.0) - log(0.0)'
+
+# usage errors
+expect "syntax error column"      2 '' "error: column 5: expected an expression, found end of input" -- eval '1 + '
+expect "unknown variable"         2 '' "error: column 1: unknown variable 'x'" -- eval 'x'
+expect "second expression error"  2 '' "error: expression 2: column 1: unknown function 'foo'" -- eval '1' 'foo(1)'
+expect "bad define"               2 '' "error: eval: -D 'x': expected NAME=EXPR" -- eval -D x '1'
+expect "define error"             2 '' "error: -D 'y': column 8: operator '+': operands vec2 and vec3 do not match" -- eval -D 'y=vec2(1)+vec3(1)' '1'
+expect "bad precision"            2 '' "error: eval: unknown precision 'half' (double, highp, mediump, lowp)" -- eval -p half '1'
+expect "bad format"               2 '' "error: eval: unknown format 'xml' (glsl, csv, json)" -- eval -f xml '1'
+expect "unknown option"           2 '' "~option '--frob' is unknown" -- eval --frob '1'
+expect "help"                     0 '~usage: shadecalc eval' '' -- eval --help
