@@ -73,10 +73,9 @@ static sc_value select_components(const expr_node *n, const sc_value *base)
 static sc_value eval_node(eval_state *st, int index)
 {
     const expr_node *n = &st->e->nodes[index];
-    const int *kids = st->e->kids + n->first;
     sc_value args[16];
     for (int i = 0; i < n->count; i++)
-        args[i] = eval_node(st, kids[i]);
+        args[i] = eval_node(st, st->e->kids[n->first + i]);
     switch (n->kind) {
     case NODE_NUMBER: return (sc_value){SC_FLOAT, {sc_round(st->p, n->num)}};
     case NODE_INPUT: return rounded(st->p, st->inputs[n->op]);

@@ -393,7 +393,7 @@ static int parse_index(parser *ps, int base)
     int limit = sc_type_matrix_n(bt) ? sc_type_matrix_n(bt) : sc_type_size(bt);
     if (bt == SC_FLOAT)
         return fail_msg(ps, column, "cannot index a float");
-    if (t.kind != TOK_NUMBER || t.num != (double)(int)t.num || t.num < 0 || t.num >= limit) {
+    if (t.kind != TOK_NUMBER || !(t.num >= 0 && t.num < limit) || t.num != (double)(int)t.num) {
         char buf[48];
         snprintf(buf, sizeof buf, "an integer index 0..%d", limit - 1);
         return fail_expected(ps, buf);
