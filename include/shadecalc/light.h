@@ -1,0 +1,93 @@
+/*
+ * shadecalc/light.h — light sources, distance attenuation and spotlight functions (SPEC §2–§4).
+ *
+ *   sc_atten, sc_atten_eval        f_d(r): none, inverse-square, clq, window, pixar,
+ *                                  windowed inverse-square (UE4/Filament)
+ *   sc_spot, sc_spot_eval          I_L(l)/I_Lmax from cos θ_s: opengl, directx, smoothstep (pbrt)
+ *   sc_light, sc_light_eval        l and E_L at a surface point: directional, point, spot
+ *   sc_light_validate              the parameter domains of SPEC §3–§4, as a message
+ *
+ * Every function takes the precision p (shadecalc/precision.h): SC_DOUBLE is the reference;
+ * in highp and mediump each named intermediate quantity is rounded to the precision and the
+ * transcendental functions are the precision's built-ins (shadecalc/pmath.h).
+ *
+ * Edges (SPEC §3): denominators of inverse-square and clq below 1e-4 are raised to 1e-4
+ * (Filament's ε², so r = 0 is finite); window with r_start = r_end is a step (1 for
+ * r <= r_start); pixar with f_c = f_max is the constant f_max inside r_c; a point on a point or
+ * spot light (r = 0) takes l = n. Spot (SPEC §4): opengl is 1 for cutoff 180°, else
+ * max(cos θ_s, 0)^exp inside the inclusive cone; directx and smoothstep with inner = outer are
+ * a hard edge at the cone (1 inside, inclusive). pow(0, 0) is 1 throughout.
+ */
+#ifndef SHADECALC_LIGHT_H
+#define SHADECALC_LIGHT_H
+
+#include <stddef.h>
+
+#include "shadecalc/precision.h"
+
+typedef enum {
+    SC_ATTEN_NONE,
+    SC_ATTEN_INVERSE_SQUARE,
+    SC_ATTEN_CLQ,
+    SC_ATTEN_WINDOW,
+    SC_ATTEN_PIXAR,
+    SC_ATTEN_WINDOWED /* (saturate(1 − (r/r_max)^4))^2 / max(r², 1e-4) */
+} sc_atten_kind;
+
+typedef struct {
+    sc_atten_kind kind;
+    double sc, sl, sq;       /* clq: 1/(s_c + s_l r + s_q r²) */
+    double r_start, r_end;   /* window */
+    double f_max, f_c, r_c, s_e; /* pixar (Barzel 1997); k0 = ln(f_c/f_max), k1 = s_e/k0 */
+    double r_max;            /* windowed inverse-square */
+} sc_atten;
+
+typedef enum { SC_SPOT_OPENGL, SC_SPOT_DIRECTX, SC_SPOT_SMOOTHSTEP } sc_spot_kind;
+
+typedef struct {
+    sc_spot_kind kind;
+    double exponent;  /* opengl, directx */
+    double cutoff;    /* opengl: θ_u in degrees, [0, 90] or 180 */
+    double inner, outer; /* directx, smoothstep: half-angles θ_p <= θ_u in degrees */
+} sc_spot;
+
+typedef enum { SC_LIGHT_DIRECTIONAL, SC_LIGHT_POINT, SC_LIGHT_SPOT } sc_light_kind;
+
+typedef struct {
+    sc_light_kind kind;
+    double dir[3];       /* directional: toward the light; spot: where the spot points */
+    double pos[3];       /* point, spot */
+    double intensity[3]; /* directional: E_L; point: I_L; spot: I_Lmax */
+    /* Colours of the legacy models (ads, opengl, direct3d9): per-light ambient L_A,k (also used
+     * by the SPEC §6 equation), diffuse and specular colours. */
+    double ambient[3], diffuse[3], specular[3];
+    double range; /* direct3d9: no light beyond this distance (default +Inf) */
+    sc_atten atten;
+    sc_spot spot;
+} sc_light;
+
+/* What a light gives at a surface point, with its intermediates (for --explain). */
+typedef struct {
+    double l[3];   /* unit vector toward the light */
+    double r;      /* distance (0 for directional) */
+    double f_d;    /* distance attenuation (1 for directional) */
+    double spot;   /* spot factor (1 unless a spot) */
+    double cos_s;  /* cos θ_s (spot only) */
+    double E[3];   /* E_L = intensity · f_d · spot */
+} sc_light_sample;
+
+/* Defaults: inverse-square attenuation, opengl spot with cutoff 180 (no cone), colours 1. */
+void sc_light_init(sc_light *light, sc_light_kind kind);
+
+double sc_atten_eval(sc_prec p, const sc_atten *a, double r);
+double sc_spot_eval(sc_prec p, const sc_spot *s, double cos_s);
+
+/* l and E_L of `light` at point `pos` with unit normal n (used only when pos is on the light). */
+void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const double n[3],
+                   sc_light_sample *out);
+
+/* 0 if the parameters are inside their domains (SPEC §3–§4), else -1 with a message naming the
+ * key and its valid range ("cutoff=120: spot=opengl takes 0..90 or 180"). */
+int sc_light_validate(const sc_light *light, char *msg, size_t size);
+
+#endif

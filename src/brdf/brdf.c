@@ -1,0 +1,178 @@
+/* BRDF dispatch, frames, defaults, names and validation (shadecalc/brdf.h). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "brdf/brdf_internal.h"
+
+static const char *const kind_names[] = {"lambert", "phong", "blinn-phong",
+                                         "ward",    "oren-nayar", "cook-torrance"};
+static const char *const form_names[][4] = {
+    {"default", NULL},
+    {"original", "modified", "normalized", NULL},
+    {"normalized", "plain", NULL},
+    {"1992", "duer", "gmd", NULL},
+    {"qualitative", "full", NULL},
+    {"walter", "1982", NULL},
+};
+
+const char *sc_brdf_kind_name(sc_brdf_kind kind) { return kind_names[kind]; }
+
+const char *sc_brdf_form_name(sc_brdf_kind kind, int form)
+{
+    for (int i = 0; i <= form; i++)
+        if (!form_names[kind][i])
+            return NULL;
+    return form_names[kind][form];
+}
+
+void sc_brdf_init(sc_brdf *b, sc_brdf_kind kind)
+{
+    *b = (sc_brdf){.kind = kind, .m = 32.0, .ax = 0.3, .ay = 0.3, .ior = 1.5};
+    b->D = SC_D_GGX;
+    b->G = SC_G_SMITH_CORRELATED;
+    b->F = SC_F_SCHLICK;
+    if (kind == SC_BRDF_PHONG)
+        b->form = SC_PHONG_NORMALIZED;
+    /* cook-torrance takes its specular colour from F (F0): c_spec is a plain multiplier */
+    double spec = kind == SC_BRDF_COOK_TORRANCE                               ? 1.0
+                  : kind == SC_BRDF_LAMBERT || kind == SC_BRDF_OREN_NAYAR ? 0.0
+                                                                            : 0.2;
+    for (int c = 0; c < 3; c++) {
+        b->diff[c] = 0.8;
+        b->spec[c] = spec;
+        b->f0[c] = 0.04;
+    }
+}
+
+double sc_lobe_pow(sc_prec p, double x, double y)
+{
+    if (y == 0.0)
+        return 1.0;
+    return x <= 0.0 ? 0.0 : sc_p_pow(p, x, y);
+}
+
+void sc_scale3(sc_prec p, const double colour[3], double scale, double out[3])
+{
+    for (int c = 0; c < 3; c++)
+        out[c] = Q(Q(colour[c]) * scale);
+}
+
+double sc_cos_floor(double x) { return x > SC_COS_FLOOR ? x : SC_COS_FLOOR; }
+
+/* ---- frames ---- */
+
+static int normalize3(const double in[3], double out[3])
+{
+    double len = sqrt(in[0] * in[0] + in[1] * in[1] + in[2] * in[2]);
+    if (!(len > 0.0) || !isfinite(len))
+        return -1;
+    for (int c = 0; c < 3; c++)
+        out[c] = in[c] / len;
+    return 0;
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Gram–Schmidt: t' = t − (t·n)n, normalized. Without a hint, the axis least aligned with n. */
+int sc_frame_make(const double n[3], const double *tangent, sc_frame *out)
+{
+    if (normalize3(n, out->n) < 0)
+        return -1;
+    double hint[3] = {0, 0, 0};
+    if (tangent)
+        memcpy(hint, tangent, sizeof hint);
+    else
+        hint[fabs(out->n[0]) < 0.9 ? 0 : 1] = 1.0;
+    double tn = hint[0] * out->n[0] + hint[1] * out->n[1] + hint[2] * out->n[2];
+    double t[3];
+    for (int c = 0; c < 3; c++)
+        t[c] = hint[c] - tn * out->n[c];
+    if (normalize3(t, out->t) < 0 || sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) < 1e-9)
+        return -1;
+    cross3(out->n, out->t, out->b);
+    return 0;
+}
+
+/* ---- evaluation ---- */
+
+/* h = (l + v)/‖l + v‖, or n when l = −v (SPEC §1). */
+static void half_vector(sc_prec p, const brdf_geometry *g, double h[3])
+{
+    double sum[3];
+    for (int c = 0; c < 3; c++)
+        sum[c] = sc_p_add(p, g->l[c], g->v[c]);
+    if (sc_p_dot(p, sum, sum, 3) > 0.0)
+        sc_p_normalize(p, sum, 3, h);
+    else
+        memcpy(h, g->frame->n, 3 * sizeof *h);
+}
+
+static void lambert(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out)
+{
+    (void)g;
+    sc_scale3(p, b->diff, Q(1.0 / SC_PI), out->diffuse);
+}
+
+void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const double l[3],
+                  const double v[3], sc_brdf_terms *out)
+{
+    memset(out, 0, sizeof *out);
+    brdf_geometry g = {.frame = frame, .l = l, .v = v};
+    g.cos_i = sc_p_dot(p, frame->n, l, 3);
+    g.cos_o = sc_p_dot(p, frame->n, v, 3);
+    half_vector(p, &g, g.h);
+    g.cos_h = sc_p_dot(p, frame->n, g.h, 3);
+    out->cos_i = g.cos_i;
+    out->cos_o = g.cos_o;
+    out->cos_h = g.cos_h;
+    if (!(g.cos_i > 0.0 && g.cos_o > 0.0))
+        return; /* below the horizon: f = 0 */
+    static void (*const models[])(sc_prec, const sc_brdf *, const brdf_geometry *,
+                                  sc_brdf_terms *) = {
+        lambert, sc_brdf_phong, sc_brdf_blinn_phong, sc_brdf_ward, sc_brdf_oren_nayar,
+        sc_brdf_cook_torrance};
+    models[b->kind](p, b, &g, out);
+    for (int c = 0; c < 3; c++)
+        out->f[c] = sc_p_add(p, out->diffuse[c], out->specular[c]);
+}
+
+/* ---- validation ---- */
+
+static int out_of_range(char *msg, size_t size, const char *key, double value, const char *range)
+{
+    snprintf(msg, size, "%s=%g: must be %s", key, value, range);
+    return -1;
+}
+
+static int validate_colour(const char *key, const double c[3], char *msg, size_t size)
+{
+    for (int i = 0; i < 3; i++)
+        if (!(c[i] >= 0.0) || !isfinite(c[i]))
+            return out_of_range(msg, size, key, c[i], ">= 0 and finite");
+    return 0;
+}
+
+int sc_brdf_validate(const sc_brdf *b, char *msg, size_t size)
+{
+    if (validate_colour("diff", b->diff, msg, size) < 0 ||
+        validate_colour("spec", b->spec, msg, size) < 0 ||
+        validate_colour("amb", b->amb, msg, size) < 0 || validate_colour("f0", b->f0, msg, size) < 0)
+        return -1;
+    if (!(b->m >= 0.0))
+        return out_of_range(msg, size, "m", b->m, ">= 0");
+    if (!(b->ax >= 0.0) || !isfinite(b->ax))
+        return out_of_range(msg, size, "alpha", b->ax, ">= 0 and finite");
+    if (!(b->ay >= 0.0) || !isfinite(b->ay))
+        return out_of_range(msg, size, "ay", b->ay, ">= 0 and finite");
+    if (!(b->sigma >= 0.0) || !isfinite(b->sigma))
+        return out_of_range(msg, size, "sigma", b->sigma * 180.0 / SC_PI, ">= 0 degrees");
+    if (!(b->ior > 0.0) || !isfinite(b->ior))
+        return out_of_range(msg, size, "ior", b->ior, "> 0 and finite");
+    return 0;
+}

@@ -1,0 +1,69 @@
+/* Oren–Nayar (1994) rough diffuse reflection, qualitative and full models (reference §10).
+ * σ is the slope-angle standard deviation in radians, α = max(θ_i, θ_o), β = min(θ_i, θ_o),
+ * Δφ the azimuth difference (cos Δφ = 0 where a direction is along n, so the Δφ terms
+ * vanish there instead of becoming 0/0). */
+#include <math.h>
+
+#include "brdf/brdf_internal.h"
+
+/* cos Δφ from the projections of l and v onto the tangent plane. */
+static double cos_delta_phi(sc_prec p, const brdf_geometry *g)
+{
+    double lp[3], vp[3];
+    for (int c = 0; c < 3; c++) {
+        lp[c] = sc_p_sub(p, g->l[c], Q(g->cos_i * g->frame->n[c]));
+        vp[c] = sc_p_sub(p, g->v[c], Q(g->cos_o * g->frame->n[c]));
+    }
+    double ll = sc_p_dot(p, lp, lp, 3), vv = sc_p_dot(p, vp, vp, 3);
+    if (!(ll > 1e-24 && vv > 1e-24))
+        return 0.0;
+    double c = Q(sc_p_dot(p, lp, vp, 3) / sc_p_sqrt(p, Q(ll * vv)));
+    return c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c;
+}
+
+static double clamped_acos(sc_prec p, double c) { return sc_p_acos(p, c > 1.0 ? 1.0 : c); }
+
+/* f/ρ·π of the qualitative model: A + B max(0, cos Δφ) sin α tan β. */
+static double qualitative(sc_prec p, double s2, double cdp, double alpha, double beta)
+{
+    double A = Q(1.0 - Q(Q(0.5 * s2) / Q(s2 + 0.33)));
+    double B = Q(Q(0.45 * s2) / Q(s2 + 0.09));
+    double term = cdp > 0.0 ? Q(Q(cdp * sc_p_sin(p, alpha)) * sc_p_tan(p, beta)) : 0.0;
+    return Q(A + Q(B * term));
+}
+
+/* f1/ρ·π of the full model: C1 + cos Δφ C2 tan β + (1 − |cos Δφ|) C3 tan((α+β)/2). */
+static double full_direct(sc_prec p, double s2, double cdp, double alpha, double beta)
+{
+    double C1 = Q(1.0 - Q(Q(0.5 * s2) / Q(s2 + 0.33)));
+    double k = Q(Q(0.45 * s2) / Q(s2 + 0.09));
+    double two_beta_pi = Q(Q(2.0 * beta) / SC_PI);
+    double sin_a = sc_p_sin(p, alpha);
+    double C2 = cdp >= 0.0 ? Q(k * sin_a)
+                           : Q(k * Q(sin_a - Q(Q(two_beta_pi * two_beta_pi) * two_beta_pi)));
+    double ab = Q(Q(Q(4.0 * alpha) * beta) / Q(SC_PI * SC_PI));
+    double C3 = Q(Q(Q(0.125 * s2) / Q(s2 + 0.09)) * Q(ab * ab));
+    double t2 = Q(Q(cdp * C2) * sc_p_tan(p, beta));
+    double t3 = Q(Q(Q(1.0 - fabs(cdp)) * C3) * sc_p_tan(p, Q(Q(alpha + beta) / 2.0)));
+    return Q(Q(C1 + t2) + t3);
+}
+
+void sc_brdf_oren_nayar(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out)
+{
+    double s2 = Q(Q(b->sigma) * Q(b->sigma));
+    double ti = clamped_acos(p, g->cos_i), to = clamped_acos(p, g->cos_o);
+    double alpha = ti > to ? ti : to, beta = ti > to ? to : ti;
+    double cdp = cos_delta_phi(p, g);
+    double inv_pi = Q(1.0 / SC_PI);
+    if (b->form != SC_OREN_FULL) {
+        sc_scale3(p, b->diff, Q(inv_pi * qualitative(p, s2, cdp, alpha, beta)), out->diffuse);
+        return;
+    }
+    sc_scale3(p, b->diff, Q(inv_pi * full_direct(p, s2, cdp, alpha, beta)), out->diffuse);
+    /* f2 = 0.17 ρ²/π · σ²/(σ²+0.13) · [1 − cos Δφ (2β/π)²], the interreflection term */
+    double two_beta_pi = Q(Q(2.0 * beta) / SC_PI);
+    double f2 = Q(Q(Q(0.17 * inv_pi) * Q(s2 / Q(s2 + 0.13))) *
+                  Q(1.0 - Q(cdp * Q(two_beta_pi * two_beta_pi))));
+    for (int c = 0; c < 3; c++)
+        out->diffuse[c] = Q(out->diffuse[c] + Q(Q(Q(b->diff[c]) * Q(b->diff[c])) * f2));
+}

@@ -1,0 +1,247 @@
+/* Light sources, distance attenuation and spotlight functions (shadecalc/light.h; SPEC §2–§4,
+ * reference §1–§2). Intermediates are rounded to the precision with Q(). */
+#include "shadecalc/light.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "shadecalc/pmath.h"
+
+#define Q(x) sc_round(p, (x))
+
+static const double pi = 3.14159265358979323846;
+static const double denom_floor = 1e-4; /* Filament's ε² for 1/r² at r -> 0 */
+
+/* cos of an angle in degrees, as a uniform the host computes in double. */
+static double cos_deg(sc_prec p, double deg) { return Q(cos(deg * (pi / 180.0))); }
+
+/* x^y with pow(0, 0) = 1 and a non-positive base giving 0 for y > 0 (the cosine lobes). */
+static double lobe_pow(sc_prec p, double x, double y)
+{
+    if (y == 0.0)
+        return 1.0;
+    return x <= 0.0 ? 0.0 : sc_p_pow(p, x, y);
+}
+
+/* ---- distance attenuation (SPEC §3) ---- */
+
+static double inverse_square(sc_prec p, double r)
+{
+    double r2 = Q(r * r);
+    return Q(1.0 / fmax(r2, denom_floor));
+}
+
+static double clq(sc_prec p, const sc_atten *a, double r)
+{
+    double d = Q(Q(a->sc + Q(a->sl * r)) + Q(a->sq * Q(r * r)));
+    return Q(1.0 / fmax(d, denom_floor));
+}
+
+static double window(sc_prec p, const sc_atten *a, double r)
+{
+    if (r <= a->r_start)
+        return 1.0;
+    if (r >= a->r_end)
+        return 0.0; /* r_start = r_end never reaches the ramp: a step */
+    return Q(Q(a->r_end - r) / Q(a->r_end - a->r_start));
+}
+
+/* Barzel 1997 (RTR3 §7.4.1): f_max·exp(k0·(r/r_c)^(−k1)) inside r_c, f_c·(r_c/r)^s_e outside.
+ * f_c = f_max gives k0 = 0 and k1 = ±inf: the limit, the constant f_max, is returned. */
+static double pixar(sc_prec p, const sc_atten *a, double r)
+{
+    if (r > a->r_c)
+        return Q(a->f_c * sc_p_pow(p, Q(a->r_c / r), a->s_e));
+    if (a->f_c == a->f_max)
+        return a->f_max;
+    double k0 = sc_p_log(p, Q(a->f_c / a->f_max));
+    double k1 = Q(a->s_e / k0);
+    double t = lobe_pow(p, Q(r / a->r_c), -k1); /* -k1 > 0: t -> 0 as r -> 0 */
+    return Q(a->f_max * sc_p_exp(p, Q(k0 * t)));
+}
+
+/* Karis 2013 / Filament: (saturate(1 − (r/r_max)^4))² / max(r², 1e-4). */
+static double windowed(sc_prec p, const sc_atten *a, double r)
+{
+    double x = Q(r / a->r_max);
+    double x2 = Q(x * x);
+    double w = fmin(fmax(Q(1.0 - Q(x2 * x2)), 0.0), 1.0);
+    return Q(Q(w * w) * inverse_square(p, r));
+}
+
+double sc_atten_eval(sc_prec p, const sc_atten *a, double r)
+{
+    switch (a->kind) {
+    case SC_ATTEN_INVERSE_SQUARE: return inverse_square(p, r);
+    case SC_ATTEN_CLQ: return clq(p, a, r);
+    case SC_ATTEN_WINDOW: return window(p, a, r);
+    case SC_ATTEN_PIXAR: return pixar(p, a, r);
+    case SC_ATTEN_WINDOWED: return windowed(p, a, r);
+    default: return 1.0;
+    }
+}
+
+/* ---- spotlight functions (SPEC §4) ---- */
+
+static double spot_opengl(sc_prec p, const sc_spot *s, double cos_s)
+{
+    if (s->cutoff == 180.0)
+        return 1.0;
+    return cos_s >= cos_deg(p, s->cutoff) ? lobe_pow(p, cos_s, s->exponent) : 0.0;
+}
+
+/* 1 inside the inner cone (cos θ_s >= cos θ_p), 0 outside the outer one (cos θ_s <= cos θ_u),
+ * else -1 with the ramp (cos θ_s − cos θ_u)/(cos θ_p − cos θ_u) in *ramp (SPEC §4). */
+static double penumbra(sc_prec p, const sc_spot *s, double cos_s, double *ramp)
+{
+    double cp = cos_deg(p, s->inner), cu = cos_deg(p, s->outer);
+    if (cos_s >= cp)
+        return 1.0;
+    if (cos_s <= cu)
+        return 0.0; /* inner = outer: one of the two tests always holds, a hard edge */
+    *ramp = Q(Q(cos_s - cu) / Q(cp - cu));
+    return -1.0;
+}
+
+static double spot_directx(sc_prec p, const sc_spot *s, double cos_s)
+{
+    double t, edge = penumbra(p, s, cos_s, &t);
+    return edge >= 0.0 ? edge : lobe_pow(p, t, s->exponent);
+}
+
+/* pbrt-v4 SpotLight::I: smoothstep of the same ramp, t²(3 − 2t). */
+static double spot_smoothstep(sc_prec p, const sc_spot *s, double cos_s)
+{
+    double t, edge = penumbra(p, s, cos_s, &t);
+    return edge >= 0.0 ? edge : Q(Q(t * t) * Q(3.0 - Q(2.0 * t)));
+}
+
+double sc_spot_eval(sc_prec p, const sc_spot *s, double cos_s)
+{
+    switch (s->kind) {
+    case SC_SPOT_DIRECTX: return spot_directx(p, s, cos_s);
+    case SC_SPOT_SMOOTHSTEP: return spot_smoothstep(p, s, cos_s);
+    default: return spot_opengl(p, s, cos_s);
+    }
+}
+
+/* ---- lights (SPEC §2) ---- */
+
+void sc_light_init(sc_light *light, sc_light_kind kind)
+{
+    *light = (sc_light){.kind = kind};
+    light->dir[2] = 1.0;
+    if (kind == SC_LIGHT_SPOT)
+        light->dir[2] = -1.0;
+    for (int c = 0; c < 3; c++)
+        light->intensity[c] = light->diffuse[c] = light->specular[c] = 1.0;
+    light->atten.kind = kind == SC_LIGHT_DIRECTIONAL ? SC_ATTEN_NONE : SC_ATTEN_INVERSE_SQUARE;
+    light->atten.sc = 1.0;
+    light->spot.kind = SC_SPOT_OPENGL;
+    light->spot.cutoff = 180.0;
+    light->spot.outer = 180.0;
+    light->range = HUGE_VAL;
+}
+
+static void rounded3(sc_prec p, const double in[3], double out[3])
+{
+    for (int c = 0; c < 3; c++)
+        out[c] = Q(in[c]);
+}
+
+void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const double n[3],
+                   sc_light_sample *out)
+{
+    *out = (sc_light_sample){.f_d = 1.0, .spot = 1.0};
+    double d[3];
+    if (light->kind == SC_LIGHT_DIRECTIONAL) {
+        rounded3(p, light->dir, d);
+        sc_p_normalize(p, d, 3, out->l);
+    } else {
+        for (int c = 0; c < 3; c++)
+            d[c] = sc_p_sub(p, Q(light->pos[c]), Q(pos[c]));
+        out->r = sc_p_length(p, d, 3);
+        if (out->r > 0.0)
+            sc_p_normalize(p, d, 3, out->l);
+        else
+            rounded3(p, n, out->l); /* on the light: l = n (SPEC §2, r = 0) */
+        out->f_d = sc_atten_eval(p, &light->atten, out->r);
+    }
+    if (light->kind == SC_LIGHT_SPOT) {
+        double s[3], minus_l[3] = {-out->l[0], -out->l[1], -out->l[2]};
+        rounded3(p, light->dir, d);
+        sc_p_normalize(p, d, 3, s);
+        out->cos_s = sc_p_dot(p, s, minus_l, 3);
+        out->spot = sc_spot_eval(p, &light->spot, out->cos_s);
+    }
+    double scale = Q(out->f_d * out->spot);
+    for (int c = 0; c < 3; c++)
+        out->E[c] = Q(Q(light->intensity[c]) * scale);
+}
+
+/* ---- validation ---- */
+
+static int invalid(char *msg, size_t size, const char *text)
+{
+    snprintf(msg, size, "%s", text);
+    return -1;
+}
+
+static int validate_atten(const sc_atten *a, char *msg, size_t size)
+{
+    switch (a->kind) {
+    case SC_ATTEN_CLQ:
+        if (a->sc < 0 || a->sl < 0 || a->sq < 0)
+            return invalid(msg, size, "sc, sl, sq must be >= 0");
+        if (a->sc == 0 && a->sl == 0 && a->sq == 0)
+            return invalid(msg, size, "sc, sl, sq must not all be 0");
+        return 0;
+    case SC_ATTEN_WINDOW:
+        if (!(a->r_start >= 0 && a->r_start <= a->r_end))
+            return invalid(msg, size, "window needs 0 <= rstart <= rend");
+        return 0;
+    case SC_ATTEN_PIXAR:
+        if (!(a->f_c > 0 && a->f_c <= a->f_max))
+            return invalid(msg, size, "pixar needs 0 < fc <= fmax");
+        if (!(a->r_c > 0 && a->s_e > 0))
+            return invalid(msg, size, "pixar needs rc > 0 and se > 0");
+        return 0;
+    case SC_ATTEN_WINDOWED:
+        return a->r_max > 0 ? 0 : invalid(msg, size, "rmax must be > 0");
+    default: return 0;
+    }
+}
+
+static int validate_spot(const sc_spot *s, char *msg, size_t size)
+{
+    if (s->exponent < 0)
+        return invalid(msg, size, "exp must be >= 0");
+    if (s->kind == SC_SPOT_OPENGL) {
+        if (!((s->cutoff >= 0 && s->cutoff <= 90) || s->cutoff == 180)) {
+            snprintf(msg, size, "cutoff=%g: spot=opengl takes 0..90 or 180", s->cutoff);
+            return -1;
+        }
+        return 0;
+    }
+    if (!(s->inner >= 0 && s->outer <= 180)) {
+        snprintf(msg, size, "inner=%g outer=%g: half-angles must be in 0..180", s->inner, s->outer);
+        return -1;
+    }
+    if (s->inner > s->outer) {
+        snprintf(msg, size, "inner=%g > outer=%g: the inner cone must not exceed the outer",
+                 s->inner, s->outer);
+        return -1;
+    }
+    return 0;
+}
+
+static int is_zero3(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
+int sc_light_validate(const sc_light *light, char *msg, size_t size)
+{
+    if (light->kind != SC_LIGHT_POINT && is_zero3(light->dir))
+        return invalid(msg, size, "dir must not be the zero vector");
+    if (validate_atten(&light->atten, msg, size) < 0)
+        return -1;
+    return light->kind == SC_LIGHT_SPOT ? validate_spot(&light->spot, msg, size) : 0;
+}
