@@ -14,7 +14,8 @@ static double alpha2_tan2(sc_prec p, const sc_frame *f, const double w[3], rough
 {
     double wt = Q(sc_p_dot(p, w, f->t, 3) * a.ax), wb = Q(sc_p_dot(p, w, f->b, 3) * a.ay);
     double wn = sc_p_dot(p, w, f->n, 3);
-    return Q(Q(Q(wt * wt) + Q(wb * wb)) / Q(wn * wn));
+    double num = Q(Q(wt * wt) + Q(wb * wb));
+    return num == 0.0 ? 0.0 : Q(num / Q(wn * wn)); /* never 0/0 where both underflow */
 }
 
 /* The slope terms (h·t/α_x)² + (h·b/α_y)², which are tan²θ_h·(…)·cos²θ_h without the
@@ -32,7 +33,7 @@ static double ndf(sc_prec p, const sc_brdf *b, const brdf_geometry *g, roughness
     if (ch <= 0.0)
         return 0.0;
     if (b->D == SC_D_BECKMANN) { /* exp(−s²/cos²θ_h) / (π α_x α_y cos⁴θ_h) */
-        double e = sc_p_exp(p, Q(-Q(s2 / ch2)));
+        double e = s2 == 0.0 ? 1.0 : sc_p_exp(p, Q(-Q(s2 / ch2)));
         return e == 0.0 ? 0.0 : Q(e / Q(pa * Q(ch2 * ch2)));
     }
     double d = Q(s2 + ch2); /* GGX: 1 / (π α_x α_y (s² + cos²θ_h)²) */
@@ -101,8 +102,10 @@ void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
     out->D = ndf(p, b, g, a);
     out->G = masking(p, b, g, a);
     fresnel(p, b, g, out->F);
-    double denom = Q(Q(4.0 * sc_cos_floor(g->cos_i)) * sc_cos_floor(g->cos_o));
-    double dg = Q(Q(out->D * out->G) / denom);
+    double dg = Q(out->D * out->G);
+    if (dg == 0.0)
+        return; /* D or G vanished: no 0/0 where the cosines' product underflows */
+    dg = Q(dg / Q(Q(4.0 * sc_cos_floor(g->cos_i)) * sc_cos_floor(g->cos_o)));
     if (b->form == SC_CT_1982)
         dg = Q(4.0 * dg);
     for (int k = 0; k < 3; k++)

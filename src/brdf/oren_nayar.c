@@ -1,7 +1,8 @@
 /* Oren–Nayar (1994) rough diffuse reflection, qualitative and full models (reference §10).
  * σ is the slope-angle standard deviation in radians, α = max(θ_i, θ_o), β = min(θ_i, θ_o),
  * Δφ the azimuth difference (cos Δφ = 0 where a direction is along n, so the Δφ terms
- * vanish there instead of becoming 0/0). */
+ * vanish there instead of becoming 0/0). The full model's direct term is clamped at 0, where
+ * the approximation breaks down at extreme grazing angles. */
 #include <math.h>
 
 #include "brdf/brdf_internal.h"
@@ -45,7 +46,10 @@ static double full_direct(sc_prec p, double s2, double cdp, double alpha, double
     double C3 = Q(Q(Q(0.125 * s2) / Q(s2 + 0.09)) * Q(ab * ab));
     double t2 = Q(Q(cdp * C2) * sc_p_tan(p, beta));
     double t3 = Q(Q(Q(1.0 - fabs(cdp)) * C3) * sc_p_tan(p, Q(Q(alpha + beta) / 2.0)));
-    return Q(Q(C1 + t2) + t3);
+    double f1 = Q(Q(C1 + t2) + t3);
+    /* With cos Δφ < 0, both directions near grazing and a large σ, tan β outgrows the vanishing
+     * C2 and the bracket turns negative (e.g. −0.16 at θ = 89.9999°, σ = 1): clamped to 0. */
+    return f1 > 0.0 ? f1 : 0.0;
 }
 
 void sc_brdf_oren_nayar(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out)

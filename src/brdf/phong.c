@@ -21,6 +21,8 @@ void sc_brdf_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_
 {
     add_diffuse(p, b, out);
     double lobe = sc_lobe_pow(p, cos_alpha_r(p, g), b->m), scale;
+    if (lobe == 0.0)
+        return; /* an underflowed lobe never meets an overflowed normalization (0·∞) */
     switch (b->form) {
     case SC_PHONG_ORIGINAL: /* the 1/cos θ_i that makes it non-reciprocal */
         scale = Q(lobe / Q(SC_PI * sc_cos_floor(g->cos_i)));
@@ -36,6 +38,8 @@ void sc_brdf_blinn_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
 {
     add_diffuse(p, b, out);
     double lobe = sc_lobe_pow(p, g->cos_h, b->m);
+    if (lobe == 0.0)
+        return;
     double scale = b->form == SC_BLINN_PLAIN ? lobe : Q(Q(Q(b->m + 8.0) / Q(8.0 * SC_PI)) * lobe);
     sc_scale3(p, b->spec, scale, out->specular);
 }

@@ -13,6 +13,8 @@ static double ward_exponential(sc_prec p, const double hu[3], const sc_frame *f,
     double ht = Q(sc_p_dot(p, hu, f->t, 3) / ax), hb = Q(sc_p_dot(p, hu, f->b, 3) / ay);
     double hn = sc_p_dot(p, hu, f->n, 3);
     double num = Q(Q(ht * ht) + Q(hb * hb));
+    if (num == 0.0)
+        return 1.0; /* h along n: tan θ_h = 0 even where (h_u·n)² underflows */
     return sc_p_exp(p, Q(-Q(num / Q(hn * hn))));
 }
 
