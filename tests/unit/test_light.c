@@ -1,0 +1,266 @@
+/* Lights, attenuation, spot functions and the shading models (shadecalc/light.h, shade.h)
+ * against the worked examples of reference §1–§3 (independent Python, IEEE double). */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "shadecalc/shade.h"
+
+static const double pi = 3.14159265358979323846;
+
+static void assert_rel(double got, double want, double tol)
+{
+    if (!(fabs(got - want) <= tol * fabs(want)))
+        fail_msg("got %.15g, want %.15g", got, want);
+}
+
+static double atten(sc_prec p, sc_atten a, double r) { return sc_atten_eval(p, &a, r); }
+
+static void attenuation_worked_examples(void **state)
+{
+    (void)state;
+    sc_atten inv = {.kind = SC_ATTEN_INVERSE_SQUARE};
+    assert_rel(100.0 * atten(SC_DOUBLE, inv, 5), 4.0, 1e-15);
+    sc_atten gl = {.kind = SC_ATTEN_CLQ, .sc = 1, .sl = 0.05, .sq = 0.02};
+    assert_rel(atten(SC_DOUBLE, gl, 5), 0.571428571429, 1e-12);
+    assert_rel(atten(SC_HIGHP, gl, 5), 0.571428571429, 1e-6);
+    sc_atten win = {.kind = SC_ATTEN_WINDOW, .r_start = 2, .r_end = 10};
+    assert_true(atten(SC_DOUBLE, win, 1) == 1.0);
+    assert_true(atten(SC_DOUBLE, win, 4) == 0.75);
+    assert_true(atten(SC_DOUBLE, win, 12) == 0.0);
+    sc_atten px = {.kind = SC_ATTEN_PIXAR, .f_max = 2, .f_c = 1, .r_c = 1, .s_e = 2};
+    const double r[] = {0, 0.25, 0.5, 1, 2, 4};
+    const double f[] = {2, 1.97476962722, 1.82091643588, 1, 0.25, 0.0625};
+    for (int i = 0; i < 6; i++) {
+        assert_rel(atten(SC_DOUBLE, px, r[i]), f[i], 1e-11);
+        assert_rel(atten(SC_HIGHP, px, r[i]), f[i], 1e-6);
+    }
+    sc_atten filament = {.kind = SC_ATTEN_WINDOWED, .r_max = 10};
+    assert_rel(atten(SC_DOUBLE, filament, 5), 0.03515625, 1e-15);
+}
+
+/* SPEC §3 edges: r = 0 finite, r_start = r_end a step, f_c = f_max flat, C¹ pixar at r_c. */
+static void attenuation_edges(void **state)
+{
+    (void)state;
+    for (int p = SC_DOUBLE; p <= SC_MEDIUMP; p++) {
+        sc_atten inv = {.kind = SC_ATTEN_INVERSE_SQUARE};
+        assert_true(atten((sc_prec)p, inv, 0) == 1e4 || p == SC_MEDIUMP);
+        assert_true(isfinite(atten((sc_prec)p, inv, 0)));
+        sc_atten clq = {.kind = SC_ATTEN_CLQ, .sq = 1};
+        assert_true(isfinite(atten((sc_prec)p, clq, 0)));
+        sc_atten w = {.kind = SC_ATTEN_WINDOWED, .r_max = 1};
+        assert_true(isfinite(atten((sc_prec)p, w, 0)));
+    }
+    sc_atten step = {.kind = SC_ATTEN_WINDOW, .r_start = 3, .r_end = 3};
+    assert_true(atten(SC_DOUBLE, step, 3) == 1.0);
+    assert_true(atten(SC_DOUBLE, step, nextafter(3.0, 4.0)) == 0.0);
+    sc_atten flat = {.kind = SC_ATTEN_PIXAR, .f_max = 2, .f_c = 2, .r_c = 1, .s_e = 2};
+    assert_true(atten(SC_DOUBLE, flat, 0) == 2.0 && atten(SC_DOUBLE, flat, 0.5) == 2.0);
+    assert_true(atten(SC_DOUBLE, flat, 2) == 0.5);
+    sc_atten px = {.kind = SC_ATTEN_PIXAR, .f_max = 2, .f_c = 1, .r_c = 1, .s_e = 2};
+    double h = 1e-6, left = (atten(SC_DOUBLE, px, 1) - atten(SC_DOUBLE, px, 1 - h)) / h;
+    double right = (atten(SC_DOUBLE, px, 1 + h) - atten(SC_DOUBLE, px, 1)) / h;
+    assert_true(fabs(left + 2.0) < 1e-4 && fabs(right + 2.0) < 1e-4); /* −f_c s_e / r_c */
+}
+
+static double spot_at(sc_spot s, double theta_deg)
+{
+    return sc_spot_eval(SC_DOUBLE, &s, cos(theta_deg * pi / 180.0));
+}
+
+static void spot_worked_examples(void **state)
+{
+    (void)state;
+    sc_spot gl = {.kind = SC_SPOT_OPENGL, .cutoff = 30, .exponent = 2};
+    assert_rel(spot_at(gl, 15), 0.933012701892, 1e-12);
+    assert_rel(spot_at(gl, 25), 0.821393804843, 1e-12);
+    assert_rel(spot_at(gl, 29.9), 0.751509973315, 1e-12);
+    assert_true(spot_at(gl, 31) == 0.0);
+    sc_spot dx = {.kind = SC_SPOT_DIRECTX, .inner = 20, .outer = 30, .exponent = 1};
+    assert_true(spot_at(dx, 10) == 1.0 && spot_at(dx, 20) == 1.0 && spot_at(dx, 30) == 0.0);
+    assert_rel(spot_at(dx, 25), 0.546815597112, 1e-11);
+    assert_rel(spot_at(dx, 28), 0.229711257779, 1e-11);
+    dx.exponent = 2;
+    assert_rel(spot_at(dx, 25), 0.299007297245, 1e-11);
+    sc_spot ss = {.kind = SC_SPOT_SMOOTHSTEP, .inner = 20, .outer = 30};
+    assert_rel(spot_at(ss, 25), 0.570018184167, 1e-11);
+    sc_spot hard = {.kind = SC_SPOT_DIRECTX, .inner = 30, .outer = 30, .exponent = 1};
+    assert_true(spot_at(hard, 29.9) == 1.0 && spot_at(hard, 30.1) == 0.0);
+    sc_spot omni = {.kind = SC_SPOT_OPENGL, .cutoff = 180, .exponent = 5};
+    assert_true(spot_at(omni, 170) == 1.0);
+    /* Direct3D 9 full angles Theta = 40°, Phi = 60° are half-angles 20° and 30° */
+    assert_rel(spot_at(dx, 25), 0.299007297245, 1e-11);
+}
+
+static void validation_names_the_key(void **state)
+{
+    (void)state;
+    sc_light l;
+    char msg[128];
+    sc_light_init(&l, SC_LIGHT_SPOT);
+    l.spot.cutoff = 120;
+    assert_int_equal(sc_light_validate(&l, msg, sizeof msg), -1);
+    assert_string_equal(msg, "cutoff=120: spot=opengl takes 0..90 or 180");
+    l.spot.kind = SC_SPOT_DIRECTX;
+    l.spot.inner = 40;
+    l.spot.outer = 30;
+    assert_int_equal(sc_light_validate(&l, msg, sizeof msg), -1);
+    assert_non_null(strstr(msg, "inner=40 > outer=30"));
+    sc_light_init(&l, SC_LIGHT_POINT);
+    l.atten.kind = SC_ATTEN_PIXAR;
+    l.atten.f_max = 1;
+    l.atten.f_c = 2;
+    l.atten.r_c = 1;
+    l.atten.s_e = 1;
+    assert_int_equal(sc_light_validate(&l, msg, sizeof msg), -1);
+    assert_non_null(strstr(msg, "fc <= fmax"));
+    sc_light_init(&l, SC_LIGHT_DIRECTIONAL);
+    memset(l.dir, 0, sizeof l.dir);
+    assert_int_equal(sc_light_validate(&l, msg, sizeof msg), -1);
+}
+
+static sc_shade_point gl_vertex(void)
+{
+    sc_shade_point at = {.pos = {1, 0, -4}};
+    const double n[3] = {0, 0, 1};
+    sc_frame_make(n, NULL, &at.frame);
+    double len = sqrt(17.0);
+    at.v[0] = -1 / len; /* toward the eye at the origin */
+    at.v[1] = 0;
+    at.v[2] = 4 / len;
+    return at;
+}
+
+/* reference §3 worked example: GL 1.x lighting of one vertex. */
+static sc_scene gl_scene(sc_light *light)
+{
+    sc_light_init(light, SC_LIGHT_SPOT);
+    const double pos[3] = {1, 3, 0}, dir[3] = {0, -1, -1};
+    memcpy(light->pos, pos, sizeof pos);
+    memcpy(light->dir, dir, sizeof dir);
+    light->atten = (sc_atten){.kind = SC_ATTEN_CLQ, .sc = 1, .sl = 0.05, .sq = 0.02};
+    light->spot = (sc_spot){.kind = SC_SPOT_OPENGL, .cutoff = 30, .exponent = 10};
+    for (int c = 0; c < 3; c++)
+        light->ambient[c] = 0.1;
+    sc_scene s = {.lights = light, .n_lights = 1};
+    sc_model_init(&s.model, SC_MODEL_OPENGL);
+    const double e[3] = {0.1, 0, 0}, d[3] = {0.8, 0.5, 0.2};
+    memcpy(s.model.emission, e, sizeof e);
+    memcpy(s.model.brdf.diff, d, sizeof d);
+    for (int c = 0; c < 3; c++) {
+        s.model.brdf.amb[c] = 0.2;
+        s.model.brdf.spec[c] = 0.5;
+        s.ambient[c] = 0.2;
+    }
+    s.model.brdf.m = 20;
+    return s;
+}
+
+static void opengl_worked_example(void **state)
+{
+    (void)state;
+    sc_light light;
+    sc_scene s = gl_scene(&light);
+    sc_shade_point at = gl_vertex();
+    sc_light_terms terms;
+    sc_shade_result r = {.per_light = &terms};
+    sc_shade(SC_DOUBLE, &s, &at, &r);
+    assert_rel(terms.light.f_d, 0.571428571429, 1e-11);
+    assert_rel(terms.light.spot, 0.9039207968, 1e-9);
+    assert_rel(terms.brdf.cos_h, 0.948683298051, 1e-11);
+    const double non_local[3] = {0.570958041479, 0.346991760775, 0.223025480071};
+    for (int c = 0; c < 3; c++)
+        assert_rel(r.L[c], non_local[c], 1e-11);
+    s.model.local_viewer = 1;
+    sc_shade(SC_DOUBLE, &s, &at, &r);
+    const double local[3] = {0.554565045793, 0.330598765089, 0.206632484385};
+    for (int c = 0; c < 3; c++)
+        assert_rel(r.L[c], local[c], 1e-11);
+    s.model.local_viewer = 0;
+    s.model.separate_specular = 1;
+    sc_shade(SC_DOUBLE, &s, &at, &r);
+    const double primary[3] = {0.480907271936, 0.256940991232, 0.132974710528};
+    for (int c = 0; c < 3; c++) {
+        assert_rel(r.primary[c], primary[c], 1e-11);
+        assert_rel(r.secondary[c], 0.0900507695435, 1e-11);
+    }
+    /* the same light made directional (0,3,4) with cutoff 180 */
+    s.model.separate_specular = 0;
+    light.kind = SC_LIGHT_DIRECTIONAL;
+    const double d[3] = {0, 3, 4};
+    memcpy(light.dir, d, sizeof d);
+    sc_shade(SC_DOUBLE, &s, &at, &r);
+    const double directional[3] = {0.97433922005, 0.63433922005, 0.39433922005};
+    for (int c = 0; c < 3; c++)
+        assert_rel(r.L[c], directional[c], 1e-11);
+}
+
+/* SPEC §6: L_o = c_amb ⊙ L_A + Σ [c_amb ⊙ L_A,k + f ⊙ E_L cos̄θ_i], against the closed form. */
+static void shading_equation_sums_lights(void **state)
+{
+    (void)state;
+    sc_light lights[2];
+    sc_light_init(&lights[0], SC_LIGHT_DIRECTIONAL);
+    sc_light_init(&lights[1], SC_LIGHT_POINT);
+    const double d[3] = {0, 1, 1}, pos[3] = {0, 0, 2};
+    memcpy(lights[0].dir, d, sizeof d);
+    memcpy(lights[1].pos, pos, sizeof pos);
+    for (int c = 0; c < 3; c++) {
+        lights[0].intensity[c] = 2.0;
+        lights[1].intensity[c] = 8.0;
+        lights[1].ambient[c] = 0.5;
+    }
+    sc_scene s = {.lights = lights, .n_lights = 2};
+    sc_model_init(&s.model, SC_MODEL_BRDF);
+    for (int c = 0; c < 3; c++) {
+        s.model.brdf.amb[c] = 0.1;
+        s.ambient[c] = 0.3;
+    }
+    sc_shade_point at = {.v = {0, 0, 1}};
+    const double n[3] = {0, 0, 1};
+    sc_frame_make(n, NULL, &at.frame);
+    sc_shade_result r = {.per_light = NULL};
+    sc_shade(SC_DOUBLE, &s, &at, &r);
+    /* 0.1·0.3 + [0.8/π · 2 · cos 45°] + [0.1·0.5 + 0.8/π · 8/4 · 1] */
+    double want = 0.03 + 0.8 / pi * 2 * sqrt(0.5) + 0.05 + 0.8 / pi * 2;
+    assert_rel(r.L[0], want, 1e-14);
+}
+
+static void point_on_the_light_is_finite(void **state)
+{
+    (void)state;
+    sc_light light;
+    sc_light_init(&light, SC_LIGHT_SPOT);
+    sc_scene s = {.lights = &light, .n_lights = 1};
+    sc_model_init(&s.model, SC_MODEL_BRDF);
+    sc_shade_point at = {.v = {0, 0, 1}};
+    const double n[3] = {0, 0, 1};
+    sc_frame_make(n, NULL, &at.frame);
+    for (int p = SC_DOUBLE; p <= SC_MEDIUMP; p++) {
+        sc_light_terms t;
+        sc_shade_result r = {.per_light = &t};
+        sc_shade((sc_prec)p, &s, &at, &r);
+        assert_true(t.light.r == 0.0 && t.light.l[2] == 1.0);
+        assert_true(isfinite(r.L[0]) && isfinite(r.L[1]) && isfinite(r.L[2]));
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(attenuation_worked_examples),
+        cmocka_unit_test(attenuation_edges),
+        cmocka_unit_test(spot_worked_examples),
+        cmocka_unit_test(validation_names_the_key),
+        cmocka_unit_test(opengl_worked_example),
+        cmocka_unit_test(shading_equation_sums_lights),
+        cmocka_unit_test(point_on_the_light_is_finite),
+    };
+    return cmocka_run_group_tests_name("light", tests, NULL, NULL);
+}
