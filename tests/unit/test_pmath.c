@@ -5,6 +5,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #include <cmocka.h>
 
@@ -129,6 +130,43 @@ static void faceforward_flips_toward_the_viewer(void **state)
     assert_true(r[2] == -1);
 }
 
+
+/* The stated bounds of the geometric functions (man page, ACCURACY), on random vectors:
+ * |dot_highp − dot| <= γ_n Σ|a_i b_i| with γ_n = n·u/(1 − n·u), u = 2^-24 (Higham, Accuracy and
+ * Stability of Numerical Algorithms, §3.1); normalize within (n + 2)·u relative per component
+ * of the exact unit vector, plus u of the largest component for the cancellation-free case. */
+static double uniform(unsigned *seed) { return (double)rand_r(seed) / RAND_MAX * 2.0 - 1.0; }
+
+static void geometric_functions_meet_their_stated_bounds(void **state)
+{
+    (void)state;
+    unsigned seed = 7;
+    const double u = 0x1p-24;
+    for (int trial = 0; trial < 200000; trial++) {
+        int n = 2 + trial % 3;
+        double a[4], b[4], exact = 0.0, mag = 0.0, len2 = 0.0;
+        for (int k = 0; k < n; k++) {
+            a[k] = (double)(float)(uniform(&seed) * 100.0);
+            b[k] = (double)(float)(uniform(&seed) * 100.0);
+            exact += a[k] * b[k]; /* exact enough: products of floats are exact in double */
+            mag += fabs(a[k] * b[k]);
+            len2 += a[k] * a[k];
+        }
+        double gamma = n * u / (1.0 - n * u);
+        double got = sc_p_dot(SC_HIGHP, a, b, n);
+        if (!(fabs(got - exact) <= gamma * mag + 1e-300))
+            fail_msg("dot error %g > bound %g", fabs(got - exact), gamma * mag);
+        double unit[4];
+        sc_p_normalize(SC_HIGHP, a, n, unit);
+        double len = sqrt(len2);
+        for (int k = 0; k < n; k++) {
+            double want = a[k] / len;
+            if (!(fabs(unit[k] - want) <= (n + 2) * u * (fabs(want) + 0x1p-24)))
+                fail_msg("normalize component error %g", fabs(unit[k] - want));
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -143,6 +181,7 @@ int main(void)
         cmocka_unit_test(reflect_mirrors_about_the_normal),
         cmocka_unit_test(refract_bends_and_reflects_totally),
         cmocka_unit_test(faceforward_flips_toward_the_viewer),
+        cmocka_unit_test(geometric_functions_meet_their_stated_bounds),
     };
     return cmocka_run_group_tests_name("pmath", tests, NULL, NULL);
 }
