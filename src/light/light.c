@@ -191,23 +191,35 @@ static int validate_atten(const sc_atten *a, char *msg, size_t size)
 {
     switch (a->kind) {
     case SC_ATTEN_CLQ:
-        if (a->sc < 0 || a->sl < 0 || a->sq < 0)
-            return invalid(msg, size, "sc, sl, sq must be >= 0");
-        if (a->sc == 0 && a->sl == 0 && a->sq == 0)
-            return invalid(msg, size, "sc, sl, sq must not all be 0");
+        if (!(a->sc >= 0 && a->sl >= 0 && a->sq >= 0) || a->sc + a->sl + a->sq == 0) {
+            snprintf(msg, size, "sc=%g sl=%g sq=%g: clq needs each >= 0, not all 0", a->sc, a->sl,
+                     a->sq);
+            return -1;
+        }
         return 0;
     case SC_ATTEN_WINDOW:
-        if (!(a->r_start >= 0 && a->r_start <= a->r_end))
-            return invalid(msg, size, "window needs 0 <= rstart <= rend");
+        if (!(a->r_start >= 0 && a->r_start <= a->r_end)) {
+            snprintf(msg, size, "rstart=%g rend=%g: window needs 0 <= rstart <= rend", a->r_start,
+                     a->r_end);
+            return -1;
+        }
         return 0;
     case SC_ATTEN_PIXAR:
-        if (!(a->f_c > 0 && a->f_c <= a->f_max))
-            return invalid(msg, size, "pixar needs 0 < fc <= fmax");
-        if (!(a->r_c > 0 && a->s_e > 0))
-            return invalid(msg, size, "pixar needs rc > 0 and se > 0");
+        if (!(a->f_c > 0 && a->f_c <= a->f_max)) {
+            snprintf(msg, size, "fc=%g fmax=%g: pixar needs 0 < fc <= fmax", a->f_c, a->f_max);
+            return -1;
+        }
+        if (!(a->r_c > 0 && a->s_e > 0)) {
+            snprintf(msg, size, "rc=%g se=%g: pixar needs rc > 0 and se > 0", a->r_c, a->s_e);
+            return -1;
+        }
         return 0;
     case SC_ATTEN_WINDOWED:
-        return a->r_max > 0 ? 0 : invalid(msg, size, "rmax must be > 0");
+        if (!(a->r_max > 0)) {
+            snprintf(msg, size, "rmax=%g: must be > 0", a->r_max);
+            return -1;
+        }
+        return 0;
     default: return 0;
     }
 }

@@ -42,3 +42,30 @@ e2e_run() { # NAME INPUT STATUS STDOUT STDERR -- ARGS...
 
 expect() { n=$1; shift; e2e_run "$n" "" "$@"; }
 expect_stdin() { n=$1 i=$2; shift 2; e2e_run "$n" "$i" "$@"; }
+
+# expect_close NAME TOL 'X Y Z ...' -- ARGS...
+#   runs `shadecalc ARGS...`, expects status 0 and whitespace- or comma-separated numbers on
+#   standard output, each within relative tolerance TOL of the expected one (reference values).
+expect_close() {
+    name=$1 tol=$2 want=$3
+    shift 4
+    out=$("$SHADECALC" "$@" 2>"$e2e_tmp/err")
+    status=$?
+    if [ $status = 0 ] && printf '%s\n%s\n' "$want" "$out" | tr ',' ' ' | awk -v tol="$tol" '
+        NR == 1 { n = split($0, w, " ") }
+        NR == 2 { m = split($0, g, " ") }
+        END {
+            if (n != m) exit 1
+            for (i = 1; i <= n; i++) {
+                d = g[i] - w[i]; if (d < 0) d = -d
+                a = w[i]; if (a < 0) a = -a
+                if (d > tol * a) exit 1
+            }
+        }'; then
+        echo "ok   $name"; echo pass >>"$E2E_COUNTS"
+    else
+        echo "FAIL $name: shadecalc $*"
+        echo "  want [$want] within $tol, got [$out] (status $status)"
+        echo fail >>"$E2E_COUNTS"
+    fi
+}

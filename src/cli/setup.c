@@ -1,0 +1,150 @@
+/* Building a shading setup from options and scene files (setup.h). */
+#include "cli/setup.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+void setup_init(shade_setup *s)
+{
+    memset(s, 0, sizeof *s);
+    sc_model_init(&s->model, SC_MODEL_BRDF);
+    s->n[2] = 1.0;
+    s->v[2] = 1.0;
+}
+
+int setup_add_light(shade_setup *s, const char *spec, const char *where)
+{
+    char err[256];
+    if (s->n_lights == SETUP_MAX_LIGHTS) {
+        sc_error("%stoo many lights (at most %d)", where, SETUP_MAX_LIGHTS);
+        return SC_EXIT_USAGE;
+    }
+    if (sc_light_parse(spec, &s->lights[s->n_lights], err, sizeof err) < 0) {
+        sc_error("%s%s", where, err);
+        return SC_EXIT_USAGE;
+    }
+    s->n_lights++;
+    return SC_EXIT_OK;
+}
+
+int setup_set_model(shade_setup *s, const char *spec, const char *where)
+{
+    char err[256];
+    if (sc_model_parse(spec, &s->model, err, sizeof err) < 0) {
+        sc_error("%s%s", where, err);
+        return SC_EXIT_USAGE;
+    }
+    s->have_model = 1;
+    return SC_EXIT_OK;
+}
+
+int setup_set_value(shade_setup *s, const char *name, const char *value, const char *where)
+{
+    static const char *const names[] = {"ambient", "n", "v", "p", "eye", "tangent"};
+    double *fields[] = {s->ambient, s->n, s->v, s->p, s->eye, s->tangent};
+    int *flags[] = {NULL, NULL, &s->have_v, NULL, &s->have_eye, &s->have_tangent};
+    for (int i = 0; i < 6; i++) {
+        if (strcmp(name, names[i]) != 0)
+            continue;
+        int bad = i == 0 ? sc_parse_colour(value, fields[i]) : sc_parse_vector3(value, fields[i]);
+        if (bad) {
+            sc_error("%s--%s %s: expected %s", where, name, value,
+                     i == 0 ? "a colour R,G,B (or one number)" : "three numbers X,Y,Z");
+            return SC_EXIT_USAGE;
+        }
+        if (flags[i])
+            *flags[i] = 1;
+        return SC_EXIT_OK;
+    }
+    sc_error("%sunknown item '%s'", where, name);
+    return SC_EXIT_USAGE;
+}
+
+/* One line of a scene file: "WORD rest". */
+static int apply_line(shade_setup *s, char *line, const char *where)
+{
+    char *word = line + strspn(line, " \t");
+    size_t len = strcspn(word, " \t");
+    char *rest = word + len;
+    rest += strspn(rest, " \t");
+    word[len] = '\0';
+    if (strcmp(word, "light") == 0)
+        return setup_add_light(s, rest, where);
+    if (strcmp(word, "brdf") == 0)
+        return setup_set_model(s, rest, where);
+    return setup_set_value(s, word, rest, where);
+}
+
+int setup_load_file(shade_setup *s, const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        sc_error("%s: %s", path, strerror(errno));
+        return SC_EXIT_RUNTIME;
+    }
+    char *line = NULL, where[512];
+    size_t cap = 0;
+    int status = SC_EXIT_OK, number = 0;
+    while (status == SC_EXIT_OK && getline(&line, &cap, f) >= 0) {
+        number++;
+        line[strcspn(line, "\r\n")] = '\0';
+        char *text = line + strspn(line, " \t");
+        if (*text == '\0' || *text == '#')
+            continue;
+        snprintf(where, sizeof where, "%s:%d: ", path, number);
+        status = apply_line(s, text, where);
+    }
+    if (status == SC_EXIT_OK && ferror(f)) {
+        sc_error("%s: read error", path);
+        status = SC_EXIT_RUNTIME;
+    }
+    free(line);
+    fclose(f);
+    return status;
+}
+
+static int unit(const double in[3], double out[3], const char *what)
+{
+    double len = sqrt(in[0] * in[0] + in[1] * in[1] + in[2] * in[2]);
+    if (!(len > 0.0) || !isfinite(len)) {
+        sc_error("%s %g,%g,%g: must not be the zero vector", what, in[0], in[1], in[2]);
+        return SC_EXIT_USAGE;
+    }
+    for (int c = 0; c < 3; c++)
+        out[c] = in[c] / len;
+    return SC_EXIT_OK;
+}
+
+int setup_point(const shade_setup *s, sc_shade_point *out)
+{
+    memset(out, 0, sizeof *out);
+    memcpy(out->pos, s->p, sizeof out->pos);
+    double to_eye[3];
+    for (int c = 0; c < 3; c++)
+        to_eye[c] = s->eye[c] - s->p[c];
+    int status = s->have_eye && !s->have_v ? unit(to_eye, out->v, "--eye minus --p")
+                                           : unit(s->v, out->v, "--v");
+    if (status != SC_EXIT_OK)
+        return status;
+    double n[3];
+    if ((status = unit(s->n, n, "--n")) != SC_EXIT_OK)
+        return status;
+    if (sc_frame_make(n, s->have_tangent ? s->tangent : NULL, &out->frame) < 0) {
+        sc_error("--tangent %g,%g,%g: must not be zero or parallel to the normal", s->tangent[0],
+                 s->tangent[1], s->tangent[2]);
+        return SC_EXIT_USAGE;
+    }
+    const sc_brdf *b = &s->model.brdf;
+    if (s->model.kind == SC_MODEL_BRDF && b->ax != b->ay && !s->have_tangent &&
+        (b->kind == SC_BRDF_WARD || b->kind == SC_BRDF_COOK_TORRANCE)) {
+        sc_error("brdf %s: anisotropic roughness (ax=%g ay=%g) needs --tangent X,Y,Z",
+                 sc_brdf_kind_name(b->kind), b->ax, b->ay);
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}

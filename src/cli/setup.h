@@ -1,0 +1,37 @@
+/* A shading setup as the command line builds it (shade, and later sweep and render): lights,
+ * model, ambient, geometry, from options and scene files. */
+#ifndef SHADECALC_CLI_SETUP_H
+#define SHADECALC_CLI_SETUP_H
+
+#include "shadecalc/scene.h"
+
+enum { SETUP_MAX_LIGHTS = 64 };
+
+typedef struct {
+    sc_light lights[SETUP_MAX_LIGHTS];
+    int n_lights;
+    sc_model model;
+    int have_model;
+    double ambient[3];
+    double n[3], v[3], p[3], eye[3], tangent[3];
+    int have_v, have_eye, have_tangent;
+} shade_setup;
+
+void setup_init(shade_setup *s);
+
+/* Each applies one item (`what` names it in messages) and returns an exit status: OK, or USAGE
+ * after printing the error. */
+int setup_add_light(shade_setup *s, const char *spec, const char *where);
+int setup_set_model(shade_setup *s, const char *spec, const char *where);
+/* name is one of ambient n v p eye tangent; value the option's argument */
+int setup_set_value(shade_setup *s, const char *name, const char *value, const char *where);
+
+/* Reads a scene file: lines `light SPEC`, `brdf SPEC`, `ambient C`, `n|v|p|eye|tangent X,Y,Z`,
+ * `#` comments. Exit status as above; RUNTIME if the file cannot be read. */
+int setup_load_file(shade_setup *s, const char *path);
+
+/* The shading point: n, v (from --v or from --eye and --p) and the frame. USAGE on a zero
+ * vector or a tangent parallel to n. */
+int setup_point(const shade_setup *s, sc_shade_point *out);
+
+#endif
