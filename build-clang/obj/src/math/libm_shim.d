@@ -1,4 +1,0 @@
-build-clang/obj/src/math/libm_shim.o: src/math/libm_shim.c \
-  include/shadecalc/glsl.h
-
-include/shadecalc/glsl.h:

@@ -1,4 +1,0 @@
-build-clang/obj/src/precision.o: src/precision.c \
-  include/shadecalc/precision.h
-
-include/shadecalc/precision.h:
