@@ -1,0 +1,160 @@
+/* Directional albedo by quadrature about the mirror direction, and reciprocity
+ * (shadecalc/check.h). */
+#include "shadecalc/check.h"
+
+#include <math.h>
+#include <string.h>
+
+static const double pi = 3.14159265358979323846;
+enum { MAX_ORDER = 32, FIRST_PANEL_EXP = 12 };
+
+/* Gauss–Legendre nodes and weights on [−1, 1] by Newton's method on P_n (Numerical Recipes
+ * gauleg); n <= MAX_ORDER. */
+static void gauss_legendre(int n, double *x, double *w)
+{
+    for (int i = 0; i < (n + 1) / 2; i++) {
+        double z = cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+        for (int iter = 0; iter < 100; iter++) {
+            double p0 = 1.0, p1 = 0.0;
+            for (int j = 1; j <= n; j++) { /* P_j = ((2j−1) z P_{j−1} − (j−1) P_{j−2}) / j */
+                double p2 = p1;
+                p1 = p0;
+                p0 = ((2.0 * j - 1.0) * z * p1 - (j - 1.0) * p2) / j;
+            }
+            dp = n * (z * p0 - p1) / (z * z - 1.0);
+            double dz = p0 / dp;
+            z -= dz;
+            if (fabs(dz) < 1e-16)
+                break;
+        }
+        x[i] = -z;
+        x[n - 1 - i] = z;
+        w[i] = w[n - 1 - i] = 2.0 / ((1.0 - z * z) * dp * dp);
+    }
+}
+
+/* Sorted, de-duplicated breakpoints in [lo, hi]: the ends, each `centre ± π·2^-k` for
+ * k = 1..FIRST_PANEL_EXP (panels shrinking geometrically toward the lobe), and `extra`. */
+static int breakpoints(double lo, double hi, double centre, const double *extra, int n_extra,
+                       double *out)
+{
+    int n = 0;
+    out[n++] = lo;
+    out[n++] = hi;
+    for (int i = 0; i < n_extra; i++)
+        out[n++] = extra[i];
+    for (int k = 1; k <= FIRST_PANEL_EXP; k++) {
+        out[n++] = centre - pi * ldexp(1.0, -k);
+        out[n++] = centre + pi * ldexp(1.0, -k);
+    }
+    out[n++] = centre;
+    int m = 0;
+    for (int i = 0; i < n; i++) { /* insertion sort of the points inside [lo, hi] */
+        double x = out[i];
+        if (x < lo || x > hi)
+            continue;
+        int j = m++;
+        while (j > 0 && out[j - 1] > x) {
+            out[j] = out[j - 1];
+            j--;
+        }
+        out[j] = x;
+    }
+    int u = 0;
+    for (int i = 0; i < m; i++)
+        if (u == 0 || out[i] - out[u - 1] > 1e-15)
+            out[u++] = out[i];
+    return u;
+}
+
+/* Composite Gauss–Legendre nodes and weights over the panels between breakpoints. */
+static int composite_nodes(const double *bp, int n_bp, int order, double *node, double *weight)
+{
+    double x[MAX_ORDER], w[MAX_ORDER];
+    gauss_legendre(order, x, w);
+    int n = 0;
+    for (int p = 0; p + 1 < n_bp; p++)
+        for (int k = 0; k < order; k++) {
+            double half = 0.5 * (bp[p + 1] - bp[p]);
+            node[n] = bp[p] + half * (1.0 + x[k]);
+            weight[n++] = half * w[k];
+        }
+    return n;
+}
+
+enum { MAX_BREAKS = 2 * FIRST_PANEL_EXP + 8, MAX_NODES = MAX_BREAKS * MAX_ORDER };
+
+/* ∫ over the upper hemisphere of f(l, v) cos θ_o dω in (θ_o, φ_o), with panels refined
+ * toward the mirror direction (θ_i, π) and breakpoints at θ_i and φ = π/2, 3π/2 (the kinks of
+ * the Oren–Nayar max terms); the horizon θ_o = π/2 is an end, not a kink. */
+static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], double theta_i,
+                      int order, double out[3])
+{
+    static double th[MAX_NODES], tw[MAX_NODES], ph[MAX_NODES], pw[MAX_NODES];
+    double bp[MAX_BREAKS];
+    const double phi_kinks[2] = {pi / 2.0, 1.5 * pi};
+    int nt = composite_nodes(bp, breakpoints(0.0, pi / 2.0, theta_i, NULL, 0, bp), order, th, tw);
+    int np = composite_nodes(bp, breakpoints(0.0, 2.0 * pi, pi, phi_kinks, 2, bp), order, ph, pw);
+    memset(out, 0, 3 * sizeof *out);
+    for (int i = 0; i < nt; i++) {
+        double st = sin(th[i]), ct = cos(th[i]);
+        for (int j = 0; j < np; j++) {
+            double v[3] = {st * cos(ph[j]), st * sin(ph[j]), ct};
+            sc_brdf_terms t;
+            sc_brdf_eval(SC_DOUBLE, b, f, l, v, &t);
+            double w = tw[i] * pw[j] * st * ct;
+            for (int c = 0; c < 3; c++)
+                out[c] += w * t.f[c];
+        }
+    }
+}
+
+void sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result *out)
+{
+    if (order < 2 || order > MAX_ORDER)
+        order = 16;
+    sc_frame f;
+    const double n[3] = {0, 0, 1}, t[3] = {1, 0, 0};
+    sc_frame_make(n, t, &f);
+    double th = theta_i_deg * pi / 180.0;
+    double l[3] = {sin(th), 0.0, cos(th)}, coarse[3];
+    integrate(b, &f, l, th, order, out->albedo);
+    integrate(b, &f, l, th, order / 2 > 1 ? order / 2 : 2, coarse);
+    for (int c = 0; c < 3; c++)
+        out->error[c] = fabs(out->albedo[c] - coarse[c]);
+}
+
+double sc_reciprocity_error(const sc_brdf *b, double worst_l[3], double worst_v[3])
+{
+    static const double thetas[] = {0, 10, 20, 30, 40, 50, 60, 70, 80, 89};
+    sc_frame f;
+    const double n[3] = {0, 0, 1}, t[3] = {1, 0, 0};
+    sc_frame_make(n, t, &f);
+    double worst = 0.0;
+    double dirs[10 * 8][3];
+    int nd = 0;
+    for (int i = 0; i < 10; i++)
+        for (int j = 0; j < 8; j++) {
+            double th = thetas[i] * pi / 180.0, ph = j * pi / 4.0;
+            dirs[nd][0] = sin(th) * cos(ph);
+            dirs[nd][1] = sin(th) * sin(ph);
+            dirs[nd][2] = cos(th);
+            nd++;
+        }
+    for (int a = 0; a < nd; a++)
+        for (int c = a + 1; c < nd; c++) {
+            sc_brdf_terms lv, vl;
+            sc_brdf_eval(SC_DOUBLE, b, &f, dirs[a], dirs[c], &lv);
+            sc_brdf_eval(SC_DOUBLE, b, &f, dirs[c], dirs[a], &vl);
+            double big = fmax(fabs(lv.f[0]), fabs(vl.f[0]));
+            double e = big > 0.0 ? fabs(lv.f[0] - vl.f[0]) / big : 0.0;
+            if (e > worst) {
+                worst = e;
+                if (worst_l)
+                    memcpy(worst_l, dirs[a], sizeof dirs[a]);
+                if (worst_v)
+                    memcpy(worst_v, dirs[c], sizeof dirs[c]);
+            }
+        }
+    return worst;
+}
