@@ -1,16 +1,18 @@
-/* atan, atan2, asin, acos in binary32 (GLSL ES atan(y_over_x), atan(y, x), asin, acos).
+/* atan, atan2 in binary32 (GLSL ES atan(y_over_x), atan(y, x)), and their double kernels
+ * sc_k_atan, sc_k_atan2 (also used by asin.c).
  *
  * Method: atan(t) for t in [0, 1] reduces once more, t > tan(π/12) giving
  * π/6 + atan((√3 t − 1)/(√3 + t)), to |u| <= tan(π/12) = 0.268, where the series
  * u − u³/3 + u⁵/5 − … to u^31 truncates below 2^-60; |t| > 1 uses π/2 − atan(1/t). All in
  * double. atan2 takes the ratio of the smaller to the larger magnitude (exact enough in double:
- * 2^-53) and places the angle in its quadrant; asin x = atan2(x, √((1−x)(1+x))) and
- * acos x = atan2(√((1−x)(1+x)), x), where 1 ± x is exact in double. One rounding to binary32.
- * Special values: C99 Annex F, including atan2(±0, +0) = ±0 and atan2(±0, −0) = ±π (GLSL ES
- * leaves atan(0, 0) undefined: this is the documented result); asin, acos of |x| > 1: NaN.
+ * 2^-53) and places the angle in its quadrant. One rounding to binary32.
+ * Special values: atan(±0) = ±0, atan(±Inf) = ±π/2; atan2 follows C99 Annex F, including
+ * atan2(±0, +0) = ±0 and atan2(±0, −0) = ±π (GLSL ES leaves atan(0, 0) undefined: this is the
+ * documented result), atan2(±Inf, ±Inf) = ±π/4 or ±3π/4; NaN in, NaN out.
  *
  * Stated bound: <= 1 ULP against the double reference for every binary32 input (pairs for
- * atan2); measured <= 0.5 + 2^-20 ULP.
+ * atan2). Measured: atan correctly rounded over all 2^32 inputs; atan2 <= ?? ULP on 10^8
+ * random pairs.
  */
 #include <math.h>
 
@@ -22,14 +24,12 @@ static const double sqrt3 = 1.73205080756887729353;
 static const double tan_pi_12 = 0.26794919243112270647;
 
 /* (−1)^j/(2j+1), j = 0..15: atan(u)/u = Σ (−1)^j u^(2j)/(2j+1) */
-static const double atan_coef[16] = {1.0,       -1.0 / 3,  1.0 / 5,   -1.0 / 7,
-                                     1.0 / 9,   -1.0 / 11, 1.0 / 13,  -1.0 / 15,
-                                     1.0 / 17,  -1.0 / 19, 1.0 / 21,  -1.0 / 23,
-                                     1.0 / 25,  -1.0 / 27, 1.0 / 29,  -1.0 / 31};
+static const double atan_coef[16] = {1.0,      -1.0 / 3,  1.0 / 5,  -1.0 / 7,  1.0 / 9,  -1.0 / 11,
+                                     1.0 / 13, -1.0 / 15, 1.0 / 17, -1.0 / 19, 1.0 / 21, -1.0 / 23,
+                                     1.0 / 25, -1.0 / 27, 1.0 / 29, -1.0 / 31};
 
 /* atan(t), 0 <= t <= 1 */
-static double atan_unit(double t)
-{
+static double atan_unit(double t) {
     double base = 0.0;
     if (t > tan_pi_12) {
         t = (sqrt3 * t - 1.0) / (sqrt3 + t);
@@ -38,17 +38,14 @@ static double atan_unit(double t)
     return base + t * sc_k_horner(t * t, atan_coef, 16);
 }
 
-double sc_k_atan(double x)
-{
+double sc_k_atan(double x) {
     double t = fabs(x);
     double a = t <= 1.0 ? atan_unit(t) : pi / 2.0 - atan_unit(1.0 / t);
-    return x < 0.0 ? -a : a;
+    return signbit(x) ? -a : a; /* atan(−0) = −0 */
 }
 
-double sc_k_atan2(double y, double x)
-{
-    if (x != x || y != y)
-        return x + y;
+double sc_k_atan2(double y, double x) {
+    if (x != x || y != y) return x + y;
     double ay = fabs(y), ax = fabs(x), a;
     if (ay == INFINITY && ax == INFINITY)
         a = pi / 4.0;
@@ -58,33 +55,14 @@ double sc_k_atan2(double y, double x)
         a = atan_unit(ay / ax);
     else
         a = pi / 2.0 - atan_unit(ax / ay);
-    if (signbit(x))
-        a = pi - a; /* left half-plane, including x = −0 */
+    if (signbit(x)) a = pi - a; /* left half-plane, including x = −0 */
     return signbit(y) ? -a : a;
 }
 
-float sc_atanf(float y_over_x)
-{
-    if (y_over_x != y_over_x)
-        return y_over_x;
+float sc_atanf(float y_over_x) {
     return (float)sc_k_atan((double)y_over_x);
 }
 
-float sc_atan2f(float y, float x) { return (float)sc_k_atan2((double)y, (double)x); }
-
-/* √((1 − x)(1 + x)) for |x| <= 1: both factors exact in double. */
-static double cosine_of_asin(double x) { return sqrt((1.0 - x) * (1.0 + x)); }
-
-float sc_asinf(float x)
-{
-    if (!(fabsf(x) <= 1.0f))
-        return NAN;
-    return (float)sc_k_atan2((double)x, cosine_of_asin((double)x));
-}
-
-float sc_acosf(float x)
-{
-    if (!(fabsf(x) <= 1.0f))
-        return NAN;
-    return (float)sc_k_atan2(cosine_of_asin((double)x), (double)x);
+float sc_atan2f(float y, float x) {
+    return (float)sc_k_atan2((double)y, (double)x);
 }
