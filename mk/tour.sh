@@ -1,13 +1,20 @@
 #!/bin/sh
-# The main job (`make run`): a short tour of what shadecalc computes.
-# Each step prints the command, then its output.
+# The main job (`make run`): a tour of what shadecalc computes. Each step prints the command,
+# then its output.
 set -eu
 bin=${1:-build/shadecalc}
 step() {
-    printf '\n$ shadecalc %s\n' "$*"
+    printf '\n$ shadecalc'
+    for a in "$@"; do
+        case $a in *' '*|*'('*|*'*'*) printf " '%s'" "$a" ;; *) printf ' %s' "$a" ;; esac
+    done
+    printf '\n'
     "$bin" "$@"
 }
-echo "shadecalc tour — GLSL ES built-ins from the shell (see 'man ./man/shadecalc.1')"
+echo "shadecalc tour: GLSL ES built-ins and the lighting equations from the shell"
+echo "(every command has --help; the manual is 'man ./man/shadecalc.1')"
+
+echo; echo "== GLSL ES built-ins in each precision =="
 step eval 'normalize(vec3(3,0,4))'
 step eval 'reflect(vec3(1,-1,0), vec3(0,1,0))'
 step eval --precision highp 'inversesqrt(1e-40)'
@@ -15,3 +22,19 @@ step eval --precision mediump 'inversesqrt(1e-40)'
 step eval --precision mediump --ulp 'exp2(10.3)'
 step eval --hex 'pow(2.0, 0.5)'
 step eval --format json 'mat2(1,2,3,4) * vec2(1,1)'
+
+echo; echo "== One shading value, every intermediate (SPEC 6) =="
+step shade --explain --light 'spot pos=0,4,0 dir=0,-1,0 I=50 spot=directx inner=20 outer=30 exp=1' \
+    --light 'point pos=3,3,0 I=20 atten=pixar fmax=2 fc=1 rc=1 se=2' \
+    --brdf 'cook-torrance diff=0.5,0.1,0.1 amb=0.5,0.1,0.1 f0=0.04 alpha=0.3 D=ggx G=smith F=schlick' \
+    --n 0,1,0 --v 0,1,1 --ambient 0.05
+
+echo; echo "== The OpenGL 1.x fixed-function equation, reproduced =="
+step shade --precision double --light 'spot pos=1,3,0 dir=0,-1,-1 atten=clq sc=1 sl=0.05 sq=0.02 cutoff=30 exp=10 amb=0.1' \
+    --brdf 'opengl emission=0.1,0,0 amb=0.2 diff=0.8,0.5,0.2 spec=0.5 m=20' --ambient 0.2 \
+    --p 1,0,-4 --eye 0,0,0
+
+echo; echo "== Are the models physical? Albedo and reciprocity =="
+step check --theta 0,30,60,85,89.9 --brdf 'blinn-phong diff=0 spec=1 m=8.8' \
+    --brdf 'ward form=duer diff=0 spec=1 alpha=0.2' --brdf 'ward form=gmd diff=0 spec=1 alpha=0.2' \
+    --brdf 'phong form=original diff=0 spec=1 m=10'
