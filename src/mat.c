@@ -32,20 +32,6 @@ static int is_singular(double det, const double *col_norm, int n, double u, doub
         for (int k = 0; k < n * n; k++)                                                            \
             out[k] = k % (n + 1) == 0 ? (S)1 : (S)0;                                               \
     }                                                                                              \
-    /* out[r] = ((m[r][0]·v0 + m[r][1]·v1) + ...), left to right; out must not alias v. */       \
-    static void mat_vec_##SUF(const S *m, const S *v, int n, S *out) {                             \
-        for (int r = 0; r < n; r++) {                                                              \
-            S sum = m[r] * v[0];                                                                   \
-            for (int k = 1; k < n; k++)                                                            \
-                sum = sum + m[k * n + r] * v[k];                                                   \
-            out[r] = sum;                                                                          \
-        }                                                                                          \
-    }                                                                                              \
-    /* Column c of a·b is a·(column c of b). */                                                  \
-    static void matmul_##SUF(const S *a, const S *b, int n, S *out) {                              \
-        for (int c = 0; c < n; c++)                                                                \
-            mat_vec_##SUF(a, b + c * n, n, out + c * n);                                           \
-    }                                                                                              \
     static void transpose_##SUF(const S *m, int n, S *out) {                                       \
         for (int c = 0; c < n; c++)                                                                \
             for (int r = 0; r < n; r++)                                                            \
@@ -98,25 +84,27 @@ static int is_singular(double det, const double *col_norm, int n, double u, doub
 SC_MAT_KERNELS(float, f, U_FLOAT, FLT_MIN)
 SC_MAT_KERNELS(double, d, U_DOUBLE, DBL_MIN)
 
-#define SC_MAT_TO_ARRAY_(c, k) v.c
-#define SC_MAT_FROM_ARRAY_(c, k) o[k]
+#define SC_MAT_COLUMN_(c, k) col[k]
+#define SC_MAT_STORE_(c, k) out[k] = prod.c
 
-/* The typed API of matrix type T (n×n of S) with column vector V of components EACH. */
+/* The typed API of matrix type T (n×n of S) with column vector V of components EACH
+ * (mul_vec is inline in shadecalc/mat.h). */
 #define SC_MAT_API(T, V, S, N, SUF, EACH)                                                          \
     T T##_identity(void) {                                                                         \
         T r;                                                                                       \
         identity_##SUF(N, r.m);                                                                    \
         return r;                                                                                  \
     }                                                                                              \
+    /* Column c of a·b is a·(column c of b). */                                                  \
     T T##_mul(T a, T b) {                                                                          \
         T r;                                                                                       \
-        matmul_##SUF(a.m, b.m, N, r.m);                                                            \
+        for (int c = 0; c < N; c++) {                                                              \
+            const S *col = b.m + c * N;                                                            \
+            S *out = r.m + c * N;                                                                  \
+            V prod = T##_mul_vec(a, (V){EACH(SC_MAT_COLUMN_)});                                    \
+            EACH(SC_MAT_STORE_);                                                                   \
+        }                                                                                          \
         return r;                                                                                  \
-    }                                                                                              \
-    V T##_mul_vec(T m, V v) {                                                                      \
-        S in[N] = {EACH(SC_MAT_TO_ARRAY_)}, o[N];                                                  \
-        mat_vec_##SUF(m.m, in, N, o);                                                              \
-        return (V){EACH(SC_MAT_FROM_ARRAY_)};                                                      \
     }                                                                                              \
     T T##_transpose(T m) {                                                                         \
         T r;                                                                                       \

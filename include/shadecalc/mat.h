@@ -46,7 +46,7 @@
  * The rule is invariant under scaling any column (diag(1e-30, ...) is not singular).
  *
  * Passing: matrices and vectors by value; the functions that can reject their input take
- * pointers and return 0 or −1.
+ * pointers and return 0 or −1. sc_T_mul_vec is static inline here; the rest is in src/mat.c.
  */
 #ifndef SHADECALC_MAT_H
 #define SHADECALC_MAT_H
@@ -69,9 +69,25 @@ typedef struct {
     double m[16];
 } sc_dmat4;
 
+/* m·v: component r is row r of m times v, summed left to right (((m[r][0]·v.x + m[r][1]·v.y)
+ * + m[r][2]·v.z) + m[r][3]·v.w). Inline: the renderer's hot path. */
+// clang-format off
+#define SC_MAT_ROW2_(c, r) (m.m[r] * v.x + m.m[2 + r] * v.y)
+#define SC_MAT_ROW3_(c, r) ((m.m[r] * v.x + m.m[3 + r] * v.y) + m.m[6 + r] * v.z)
+#define SC_MAT_ROW4_(c, r) (((m.m[r] * v.x + m.m[4 + r] * v.y) + m.m[8 + r] * v.z) + m.m[12 + r] * v.w)
+// clang-format on
+#define SC_MAT_DEFINE_MUL_VEC(T, V, EACH, ROW)                                                     \
+    static inline V T##_mul_vec(T m, V v) {                                                        \
+        return (V){EACH(ROW)};                                                                     \
+    }
+SC_MAT_DEFINE_MUL_VEC(sc_mat2, sc_vec2, SC_EACH2, SC_MAT_ROW2_)
+SC_MAT_DEFINE_MUL_VEC(sc_mat3, sc_vec3, SC_EACH3, SC_MAT_ROW3_)
+SC_MAT_DEFINE_MUL_VEC(sc_mat4, sc_vec4, SC_EACH4, SC_MAT_ROW4_)
+SC_MAT_DEFINE_MUL_VEC(sc_dmat3, sc_dvec3, SC_EACH3, SC_MAT_ROW3_)
+SC_MAT_DEFINE_MUL_VEC(sc_dmat4, sc_dvec4, SC_EACH4, SC_MAT_ROW4_)
+
 sc_mat2 sc_mat2_identity(void);
 sc_mat2 sc_mat2_mul(sc_mat2 a, sc_mat2 b);
-sc_vec2 sc_mat2_mul_vec(sc_mat2 m, sc_vec2 v);
 sc_mat2 sc_mat2_transpose(sc_mat2 m);
 float sc_mat2_determinant(sc_mat2 m);
 int sc_mat2_inverse(const sc_mat2 *m, sc_mat2 *out);
@@ -79,7 +95,6 @@ sc_mat2 sc_mat2_comp_mult(sc_mat2 a, sc_mat2 b);
 
 sc_mat3 sc_mat3_identity(void);
 sc_mat3 sc_mat3_mul(sc_mat3 a, sc_mat3 b);
-sc_vec3 sc_mat3_mul_vec(sc_mat3 m, sc_vec3 v);
 sc_mat3 sc_mat3_transpose(sc_mat3 m);
 float sc_mat3_determinant(sc_mat3 m);
 int sc_mat3_inverse(const sc_mat3 *m, sc_mat3 *out);
@@ -87,7 +102,6 @@ sc_mat3 sc_mat3_comp_mult(sc_mat3 a, sc_mat3 b);
 
 sc_mat4 sc_mat4_identity(void);
 sc_mat4 sc_mat4_mul(sc_mat4 a, sc_mat4 b);
-sc_vec4 sc_mat4_mul_vec(sc_mat4 m, sc_vec4 v);
 sc_mat4 sc_mat4_transpose(sc_mat4 m);
 float sc_mat4_determinant(sc_mat4 m);
 int sc_mat4_inverse(const sc_mat4 *m, sc_mat4 *out);
@@ -95,7 +109,6 @@ sc_mat4 sc_mat4_comp_mult(sc_mat4 a, sc_mat4 b);
 
 sc_dmat3 sc_dmat3_identity(void);
 sc_dmat3 sc_dmat3_mul(sc_dmat3 a, sc_dmat3 b);
-sc_dvec3 sc_dmat3_mul_vec(sc_dmat3 m, sc_dvec3 v);
 sc_dmat3 sc_dmat3_transpose(sc_dmat3 m);
 double sc_dmat3_determinant(sc_dmat3 m);
 int sc_dmat3_inverse(const sc_dmat3 *m, sc_dmat3 *out);
@@ -103,7 +116,6 @@ sc_dmat3 sc_dmat3_comp_mult(sc_dmat3 a, sc_dmat3 b);
 
 sc_dmat4 sc_dmat4_identity(void);
 sc_dmat4 sc_dmat4_mul(sc_dmat4 a, sc_dmat4 b);
-sc_dvec4 sc_dmat4_mul_vec(sc_dmat4 m, sc_dvec4 v);
 sc_dmat4 sc_dmat4_transpose(sc_dmat4 m);
 double sc_dmat4_determinant(sc_dmat4 m);
 int sc_dmat4_inverse(const sc_dmat4 *m, sc_dmat4 *out);
