@@ -54,6 +54,8 @@ static uint64_t next_random(uint64_t *s)
 float sc_accuracy_sample(uint64_t *state, double lo, double hi)
 {
     double top = fmax(fabs(lo), fabs(hi));
+    if (!(lo < hi) || top < 0x1p-149) /* an empty or single-point range */
+        return (float)lo;
     int max_exp = ilogb(top) + 1, min_exp = -149;
     for (;;) {
         uint64_t r = next_random(state);

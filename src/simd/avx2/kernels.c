@@ -1,0 +1,3 @@
+/* The batch kernels for AVX2 + FMA (src/simd/kernels_impl.h over avx2/vec.h). */
+#include "simd/avx2/vec.h"
+#include "simd/kernels_impl.h"

@@ -1,0 +1,27 @@
+/* Declarations of every batch kernel for every instruction set (src/simd/). */
+#ifndef SHADECALC_SIMD_KERNELS_H
+#define SHADECALC_SIMD_KERNELS_H
+
+#include "shadecalc/batch.h"
+
+#if defined(__x86_64__) || defined(__i386__)
+#define SC_HAVE_X86 1
+#endif
+
+/* kernel_tier names, each defined once per instruction set */
+#define SC_BATCH_KERNELS(X)                                                                       \
+    X(exp2_u1) X(exp2_u4) X(exp2_bits12) X(exp2_bits8) X(exp_u1) X(exp_bits12) X(exp_bits8)       \
+    X(log2_u1) X(log2_u4) X(log2_bits12) X(log2_bits8) X(log_u1) X(log_u4) X(log_bits12)          \
+    X(log_bits8) X(pow_u1) X(pow_bits12) X(pow_bits8) X(inversesqrt_u1) X(inversesqrt_u4)         \
+    X(inversesqrt_bits11) X(sqrt_u1)
+
+#define SC_DECLARE_SCALAR(name) void sc_batch_##name##_scalar(const sc_batch_args *a);
+#define SC_DECLARE_SSE41(name) void sc_batch_##name##_sse41(const sc_batch_args *a);
+#define SC_DECLARE_AVX2(name) void sc_batch_##name##_avx2(const sc_batch_args *a);
+SC_BATCH_KERNELS(SC_DECLARE_SCALAR)
+#ifdef SC_HAVE_X86
+SC_BATCH_KERNELS(SC_DECLARE_SSE41)
+SC_BATCH_KERNELS(SC_DECLARE_AVX2)
+#endif
+
+#endif

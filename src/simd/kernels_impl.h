@@ -1,0 +1,315 @@
+/* The batch kernels, written once against the vector helpers (vf, vm, vi; vd, vl where
+ * SIMD_HAS_DOUBLE) and included by one file per instruction set: src/simd/scalar.c,
+ * src/simd/sse41/kernels.c, src/simd/avx2/kernels.c. Every kernel is
+ * `void sc_batch_<kernel>_<tier>_<isa>(const sc_batch_args *)`.
+ *
+ * Tiers (shadecalc/batch.h): u1 kernels evaluate the algorithm of the scalar highp built-ins
+ * (src/math/) in double lanes and round once, handing the lanes with special inputs (zeros,
+ * infinities, NaN, out-of-range arguments) to the scalar built-in, so their results are those of
+ * sc_*f up to the FMA contractions of the instruction set; the faster tiers work in float lanes
+ * with polynomials fitted on the reduced interval (Chebyshev interpolation, mpmath chebyfit; the
+ * fit error is in each comment) and flush results below 2^-125 to zero, as GLSL ES highp allows.
+ */
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+
+#include "shadecalc/batch.h"
+#include "shadecalc/glsl.h"
+
+#define SC_CAT2(a, b) a##_##b
+#define SC_CAT(a, b) SC_CAT2(a, b)
+#define K(name) SC_CAT(sc_batch_##name, ISA_SUFFIX)
+
+/* ---- drivers: whole vectors, then the tail through a padded buffer ---- */
+
+typedef vf (*lane1_fn)(vf);
+typedef vf (*lane2_fn)(vf, vf);
+
+static inline void run1(const sc_batch_args *a, lane1_fn f)
+{
+    const float *x = a->in[0];
+    float *out = a->out[0];
+    size_t i = 0;
+    for (; i + VW <= a->n; i += VW)
+        vf_storeu(out + i, f(vf_loadu(x + i)));
+    if (i < a->n) {
+        float bx[VW], bo[VW];
+        for (int k = 0; k < VW; k++)
+            bx[k] = i + (size_t)k < a->n ? x[i + (size_t)k] : 1.0f;
+        vf_storeu(bo, f(vf_loadu(bx)));
+        for (size_t k = 0; i + k < a->n; k++)
+            out[i + k] = bo[k];
+    }
+}
+
+static inline void run2(const sc_batch_args *a, lane2_fn f)
+{
+    const float *x = a->in[0], *y = a->in[1];
+    float *out = a->out[0];
+    size_t i = 0;
+    for (; i + VW <= a->n; i += VW)
+        vf_storeu(out + i, f(vf_loadu(x + i), vf_loadu(y + i)));
+    if (i < a->n) {
+        float bx[VW], by[VW], bo[VW];
+        for (int k = 0; k < VW; k++) {
+            int in = i + (size_t)k < a->n;
+            bx[k] = in ? x[i + (size_t)k] : 1.0f;
+            by[k] = in ? y[i + (size_t)k] : 1.0f;
+        }
+        vf_storeu(bo, f(vf_loadu(bx), vf_loadu(by)));
+        for (size_t k = 0; i + k < a->n; k++)
+            out[i + k] = bo[k];
+    }
+}
+
+#define BATCH1(name, lane)                                                                        \
+    void K(name)(const sc_batch_args *a);                                                         \
+    void K(name)(const sc_batch_args *a) { run1(a, lane); }
+#define BATCH2(name, lane)                                                                        \
+    void K(name)(const sc_batch_args *a);                                                         \
+    void K(name)(const sc_batch_args *a) { run2(a, lane); }
+
+/* Lanes where `special` holds get the scalar built-in's result (rare inputs only). */
+static inline vf fixup1(vm special, vf x, vf r, float (*f)(float))
+{
+    if (!vm_any(special))
+        return r;
+    float bx[VW], br[VW];
+    vf_storeu(bx, x);
+    vf_storeu(br, r);
+    for (int k = 0; k < VW; k++)
+        if (vm_lane(special, k))
+            br[k] = f(bx[k]);
+    return vf_loadu(br);
+}
+
+static inline vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float))
+{
+    if (!vm_any(special))
+        return r;
+    float bx[VW], by[VW], br[VW];
+    vf_storeu(bx, x);
+    vf_storeu(by, y);
+    vf_storeu(br, r);
+    for (int k = 0; k < VW; k++)
+        if (vm_lane(special, k))
+            br[k] = f(bx[k], by[k]);
+    return vf_loadu(br);
+}
+
+/* c[0] x^(n−1) + … + c[n−1] (chebyfit order), by Horner's rule. */
+static inline vf poly(vf x, const float *c, int n)
+{
+    vf r = vf_set1(c[0]);
+    for (int i = 1; i < n; i++)
+        r = vf_fma(r, x, vf_set1(c[i]));
+    return r;
+}
+
+/* ---- float tiers: exp2, log2, pow, exp, log, inversesqrt ---- */
+
+/* 2^f on [−1/2, 1/2]: degree 2 (fit error 1.9e-3), 3 (8.1e-5), 5 (7.9e-8). */
+static const float exp2_c2[3] = {0.242035330190541f, 0.7036011773937813f, 1.0f};
+static const float exp2_c3[4] = {0.055838282946219855f, 0.24263947854625853f,
+                                 0.6931367338836215f, 0.9999245569508708f};
+static const float exp2_c5[6] = {0.0013390863364671234f, 0.009676031918322054f,
+                                 0.05550357114219078f,   0.2402210748530834f,
+                                 0.6931471880262288f,    1.0000000754548972f};
+
+/* 2^x = 2^k · p(x − k), k = rint(x); scaled as (p + p)·2^(k−1) so that k = 128 overflows to
+ * +Inf exactly when 2^x does; x < −125 flushes to 0, NaN stays NaN. */
+static inline vf exp2_fast(vf x, const float *c, int n)
+{
+    vf xc = vf_min(vf_max(x, vf_set1(-125.0f)), vf_set1(128.0f));
+    vi k = vi_round(xc);
+    vf p = poly(vf_sub(xc, vi_to_vf(k)), c, n);
+    vf scale = vi_as_vf(vi_shl23(vi_add(k, vi_set1(126))));
+    vf r = vf_mul(vf_add(p, p), scale);
+    r = vf_select(vf_lt(x, vf_set1(-125.0f)), vf_set1(0.0f), r);
+    return vf_select(vf_isnan(x), x, r);
+}
+
+/* log2(1+t)/t on [√½ − 1, √2 − 1]: degree 3 (fit error 6.0e-4), 4 (8.9e-5), 8 (5.0e-8). */
+static const float log2_c3[4] = {-0.32262359078704306f, 0.5101832372272362f,
+                                 -0.7246998473568208f, 1.4423070538781517f};
+static const float log2_c4[5] = {0.25028784696095874f, -0.38967522379177433f,
+                                 0.48573784244262974f, -0.7206292158599162f, 1.442640464283215f};
+static const float log2_c8[9] = {0.1231096846719146f,  -0.20586188051276055f,
+                                 0.21607822552243777f, -0.2391698814010418f,
+                                 0.28790326092450147f, -0.36069326813533614f,
+                                 0.48091075345941253f, -0.7213474682495624f,
+                                 1.4426950035679822f};
+
+/* x = m·2^e with m in [√½, √2) by integer arithmetic on the bits (musl logf's offset trick);
+ * log2 x = e + t·q(t), t = m − 1. Subnormal inputs count as 0 (−Inf), x < 0 is NaN. */
+static inline vf log2_fast(vf x, const float *c, int n)
+{
+    vi ix = vi_sub(vf_as_vi(x), vi_set1(0x3f3504f3));
+    vf e = vi_to_vf(vi_sra23(ix));
+    vf m = vi_as_vf(vi_add(vi_and(ix, vi_set1(0x007fffff)), vi_set1(0x3f3504f3)));
+    vf t = vf_sub(m, vf_set1(1.0f));
+    vf r = vf_fma(t, poly(t, c, n), e);
+    r = vf_select(vf_lt(x, vf_set1(FLT_MIN)), vf_set1(-INFINITY), r);
+    r = vf_select(vf_lt(x, vf_set1(0.0f)), vf_set1(NAN), r);
+    r = vf_select(vf_eq(x, vf_set1(INFINITY)), x, r);
+    return vf_select(vf_isnan(x), x, r);
+}
+
+static inline vf exp2_u4(vf x) { return exp2_fast(x, exp2_c5, 6); }
+static inline vf exp2_bits12(vf x) { return exp2_fast(x, exp2_c3, 4); }
+static inline vf exp2_bits8(vf x) { return exp2_fast(x, exp2_c2, 3); }
+static inline vf log2_u4(vf x) { return log2_fast(x, log2_c8, 9); }
+static inline vf log2_bits12(vf x) { return log2_fast(x, log2_c4, 5); }
+static inline vf log2_bits8(vf x) { return log2_fast(x, log2_c3, 4); }
+BATCH1(exp2_u4, exp2_u4)
+BATCH1(exp2_bits12, exp2_bits12)
+BATCH1(exp2_bits8, exp2_bits8)
+BATCH1(log2_u4, log2_u4)
+BATCH1(log2_bits12, log2_bits12)
+BATCH1(log2_bits8, log2_bits8)
+
+/* exp x = 2^(x log2 e): the product's rounding (|x| <= 88: 2^-17.5 absolute) limits these to
+ * the bits tiers. log x = log2 x · ln 2. */
+static const float log2e_f = 1.44269504088896340736f, ln2_f = 0.693147180559945309417f;
+static inline vf exp_bits12(vf x) { return exp2_bits12(vf_mul(x, vf_set1(log2e_f))); }
+static inline vf exp_bits8(vf x) { return exp2_bits8(vf_mul(x, vf_set1(log2e_f))); }
+static inline vf log_u4(vf x) { return vf_mul(log2_u4(x), vf_set1(ln2_f)); }
+static inline vf log_bits12(vf x) { return vf_mul(log2_bits12(x), vf_set1(ln2_f)); }
+static inline vf log_bits8(vf x) { return vf_mul(log2_bits8(x), vf_set1(ln2_f)); }
+BATCH1(exp_bits12, exp_bits12)
+BATCH1(exp_bits8, exp_bits8)
+BATCH1(log_u4, log_u4)
+BATCH1(log_bits12, log_bits12)
+BATCH1(log_bits8, log_bits8)
+
+/* pow = 2^(y log2 x): the logarithm one tier finer than the exponential, since y log2 x
+ * multiplies its error (domain: |y log2 x| <= 20, the useful range of a specular lobe). */
+static inline vf pow_bits12(vf x, vf y) { return exp2_bits12(vf_mul(y, log2_u4(x))); }
+static inline vf pow_bits8(vf x, vf y) { return exp2_bits8(vf_mul(y, log2_bits12(x))); }
+BATCH2(pow_bits12, pow_bits12)
+BATCH2(pow_bits8, pow_bits8)
+
+/* inversesqrt: the estimate instruction (relative error <= 1.5·2^-12), and one Newton step
+ * y (3 − x y²)/2. */
+static inline vf rsqrt_newton(vf x)
+{
+    vf y = vf_rsqrt_est(x);
+    vf xyy = vf_mul(vf_mul(x, y), y);
+    return vf_mul(vf_mul(vf_set1(0.5f), y), vf_sub(vf_set1(3.0f), xyy));
+}
+static inline vf sqrt_u1(vf x) { return vf_sqrt(x); }
+BATCH1(inversesqrt_u4, rsqrt_newton)
+BATCH1(inversesqrt_bits11, vf_rsqrt_est)
+BATCH1(sqrt_u1, sqrt_u1)
+
+#ifdef SIMD_HAS_DOUBLE
+/* ---- double lanes: the u1 tier ---- */
+
+/* A double kernel on the low and high halves of a float vector, rounded back to float. */
+static inline vf on_doubles(vf x, vd (*f)(vd))
+{
+    return vf_from_vd(f(vd_from_lo(x)), f(vd_from_hi(x)));
+}
+
+static inline vd vd_horner(vd x, const double *c, int n) /* c[0] + c[1] x + … */
+{
+    vd r = vd_set1(c[n - 1]);
+    for (int i = n - 2; i >= 0; i--)
+        r = vd_fma(r, x, vd_set1(c[i]));
+    return r;
+}
+
+/* 2^k for integral k in double, |k| <= 1000, through the exponent bits. */
+static inline vd vd_pow2i(vd k)
+{
+    const double shifter = 0x1.8p52; /* k + 1.5·2^52 holds k in its low bits */
+    vl bits = vl_sub(vd_as_vl(vd_add(k, vd_set1(shifter))), vd_as_vl(vd_set1(shifter)));
+    return vl_as_vd(vl_shl52(vl_add(bits, vl_set1(1023))));
+}
+
+static const double inv_factorial[14] = {1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120,
+                                         1.0 / 720, 1.0 / 5040, 1.0 / 40320, 1.0 / 362880,
+                                         1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600,
+                                         1.0 / 6227020800.0};
+
+/* src/math/exp.c in double lanes */
+static inline vd exp2_d(vd x)
+{
+    x = vd_min(vd_max(x, vd_set1(-1000.0)), vd_set1(1000.0));
+    vd k = vd_rint(x);
+    vd y = vd_mul(vd_sub(x, k), vd_set1(0.6931471805599453094));
+    return vd_mul(vd_horner(y, inv_factorial, 14), vd_pow2i(k));
+}
+
+static const double inv_odd[12] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,  1.0 / 11,
+                                   1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21, 1.0 / 23};
+
+/* src/math/log.c in double lanes, for positive normal x: *e the exponent, returns log(m). */
+static inline vd log_parts_d(vd x, vd *e)
+{
+    vl bits = vd_as_vl(x);
+    vl mant = vl_or(vl_and(bits, vl_set1(0x000fffffffffffffLL)), vl_set1(0x3ff0000000000000LL));
+    vd m = vl_as_vd(mant);
+    /* the biased exponent as a double: its bits under 2^52, minus 2^52 */
+    vd biased = vd_sub(vl_as_vd(vl_or(vl_shr52(bits), vd_as_vl(vd_set1(0x1p52)))), vd_set1(0x1p52));
+    vdm big = vd_lt(vd_set1(1.4142135623730951), m);
+    m = vd_select(big, vd_mul(m, vd_set1(0.5)), m);
+    *e = vd_add(vd_sub(biased, vd_set1(1023.0)), vd_select(big, vd_set1(1.0), vd_set1(0.0)));
+    vd s = vd_div(vd_sub(m, vd_set1(1.0)), vd_add(m, vd_set1(1.0)));
+    return vd_mul(vd_mul(vd_set1(2.0), s), vd_horner(vd_mul(s, s), inv_odd, 12));
+}
+
+static inline vd log2_d(vd x)
+{
+    vd e, lm = log_parts_d(x, &e);
+    return vd_fma(lm, vd_set1(1.4426950408889634074), e);
+}
+
+static inline vd log_d(vd x)
+{
+    vd e, lm = log_parts_d(x, &e);
+    return vd_fma(e, vd_set1(0.6931471805599453094), lm);
+}
+
+/* x not a positive normal float, or +Inf */
+static inline vm not_positive_finite(vf x)
+{
+    return vm_or(vf_lt(x, vf_set1(FLT_MIN)), vm_or(vf_eq(x, vf_set1(INFINITY)), vf_isnan(x)));
+}
+
+static inline vd exp_d(vd x) { return exp2_d(vd_mul(x, vd_set1(1.4426950408889634074))); }
+static inline vd rsqrt_d(vd x) { return vd_div(vd_set1(1.0), vd_sqrt(x)); }
+
+static inline vf exp2_u1(vf x) { return fixup1(vf_isnan(x), x, on_doubles(x, exp2_d), sc_exp2f); }
+static inline vf exp_u1(vf x) { return fixup1(vf_isnan(x), x, on_doubles(x, exp_d), sc_expf); }
+static inline vf log2_u1(vf x)
+{
+    return fixup1(not_positive_finite(x), x, on_doubles(x, log2_d), sc_log2f);
+}
+static inline vf log_u1(vf x)
+{
+    return fixup1(not_positive_finite(x), x, on_doubles(x, log_d), sc_logf);
+}
+static inline vf inversesqrt_u1(vf x) { return on_doubles(x, rsqrt_d); }
+
+/* 2^(y log2 x) on one half; the special cases of src/math/pow.c (x <= 0, x = 1, infinities,
+ * NaN, y = 0) go to the scalar built-in. */
+static inline vd pow_half(vd x, vd y) { return exp2_d(vd_mul(y, log2_d(x))); }
+
+static inline vf pow_u1(vf x, vf y)
+{
+    vf r = vf_from_vd(pow_half(vd_from_lo(x), vd_from_lo(y)), pow_half(vd_from_hi(x), vd_from_hi(y)));
+    vf abs_y = vf_max(y, vf_sub(vf_set1(0.0f), y));
+    vm special = vm_or(not_positive_finite(x), vm_or(vf_eq(y, vf_set1(0.0f)), vf_isnan(y)));
+    special = vm_or(special, vm_or(vf_eq(abs_y, vf_set1(INFINITY)), vf_eq(x, vf_set1(1.0f))));
+    return fixup2(special, x, y, r, sc_powf);
+}
+
+BATCH1(exp2_u1, exp2_u1)
+BATCH1(exp_u1, exp_u1)
+BATCH1(log2_u1, log2_u1)
+BATCH1(log_u1, log_u1)
+BATCH2(pow_u1, pow_u1)
+BATCH1(inversesqrt_u1, inversesqrt_u1)
+#endif

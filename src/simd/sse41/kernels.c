@@ -1,0 +1,3 @@
+/* The batch kernels for SSE4.1 (src/simd/kernels_impl.h over sse41/vec.h). */
+#include "simd/sse41/vec.h"
+#include "simd/kernels_impl.h"
