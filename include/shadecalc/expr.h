@@ -7,6 +7,7 @@
  *   sc_type_matrix_n         N of matN; sc_type_is_vector
  *   sc_expr_compile          source -> program (statements `NAME = EXPR;` then one expression)
  *   sc_expr_eval             run a program in a precision, with values for its inputs
+ *   sc_expr_eval_dual        run it in double with derivatives (forward-mode AD, dual numbers)
  *   sc_expr_result_type      type of the final expression
  *   sc_expr_free
  *
@@ -68,5 +69,23 @@ typedef void (*sc_expr_domain_fn)(void *user, int column, const char *func, cons
  * to p on entry). Thread-safe: e is not modified. */
 sc_value sc_expr_eval(const sc_expr *e, sc_prec p, const sc_value *inputs,
                       sc_expr_domain_fn on_domain, void *user);
+
+/* Forward-mode automatic differentiation: a value and its derivatives along SC_DUAL_DIRS
+ * directions (each tangent has the value's type). */
+enum { SC_DUAL_DIRS = 2 };
+typedef struct {
+    sc_value x;
+    sc_value d[SC_DUAL_DIRS];
+} sc_dual_value;
+
+/* Evaluates e in double precision with dual numbers: inputs[i].x is the i-th input and
+ * inputs[i].d[k] its derivative along direction k (seed u with d[0] = 1, v with d[1] = 1 to get
+ * ∂/∂u and ∂/∂v). Derivatives are exact up to rounding: every operation and built-in applies
+ * its derivative rule (chain, product and quotient rules; d(A⁻¹) = −A⁻¹·dA·A⁻¹; the determinant
+ * by multilinearity in the columns). At a kink (abs, min, max, clamp, mod, fract, floor, step,
+ * faceforward, refract's total reflection) the derivative is that of the branch the value took;
+ * where the derivative is infinite (sqrt at 0, asin at ±1) it is ±Inf or NaN, as the formula
+ * says. No domain callback: evaluate with sc_expr_eval to hear about domain errors. */
+sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs);
 
 #endif

@@ -48,6 +48,13 @@ struct sc_expr {
 /* Largest number of statements (and so of slots) in one program. */
 #define SC_EXPR_MAX_STATEMENTS 64
 
+/* ---- evaluation (eval.c), shared with the dual-number evaluator (dual.c) ---- */
+
+/* `a op b` (op '+' '-' '*' '/') with GLSL's rules, the result of type `type`, in precision p. */
+sc_value sc_expr_binary(sc_prec p, int op, sc_type type, const sc_value *a, const sc_value *b);
+/* The components a swizzle or index node `n` selects from `base`. */
+sc_value sc_expr_select(const expr_node *n, const sc_value *base);
+
 /* ---- built-ins (builtins.c) ---- */
 
 /* What an evaluator needs to report a domain error. */
