@@ -1,0 +1,72 @@
+/* Framebuffers, shading mode names and the error of an image against a reference (render.h). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "shadecalc/render.h"
+
+static const char *const shading_names[] = {"flat", "gouraud", "phong", "exact"};
+
+int sc_shading_parse(const char *name, sc_shading *out)
+{
+    for (int i = 0; i < 4; i++)
+        if (strcmp(name, shading_names[i]) == 0) {
+            *out = (sc_shading)i;
+            return 0;
+        }
+    return -1;
+}
+
+const char *sc_shading_name(sc_shading s) { return shading_names[s]; }
+
+int sc_framebuffer_init(sc_framebuffer *fb, int width, int height)
+{
+    memset(fb, 0, sizeof *fb);
+    if (width < 1 || height < 1 || width > SC_RENDER_MAX_SIDE || height > SC_RENDER_MAX_SIDE ||
+        (long)width * height > SC_RENDER_MAX_PIXELS)
+        return -1;
+    size_t n = (size_t)width * (size_t)height;
+    fb->width = width;
+    fb->height = height;
+    fb->rgba = calloc(4 * n, sizeof *fb->rgba);
+    fb->depth = calloc(n, sizeof *fb->depth);
+    fb->normal = calloc(3 * n, sizeof *fb->normal);
+    if (!fb->rgba || !fb->depth || !fb->normal) {
+        sc_framebuffer_free(fb);
+        return -1;
+    }
+    return 0;
+}
+
+void sc_framebuffer_free(sc_framebuffer *fb)
+{
+    free(fb->rgba);
+    free(fb->depth);
+    free(fb->normal);
+    memset(fb, 0, sizeof *fb);
+}
+
+void sc_render_compare(const sc_framebuffer *img, const sc_framebuffer *ref, float *map,
+                       sc_render_error *out)
+{
+    size_t n = (size_t)ref->width * (size_t)ref->height;
+    double sum = 0.0, worst = 0.0;
+    long pixels = 0;
+    for (size_t i = 0; i < n; i++) {
+        double largest = 0.0;
+        if (ref->rgba[4 * i + 3] > 0.0f) {
+            for (int c = 0; c < 3; c++) {
+                double d = fabs((double)img->rgba[4 * i + c] - ref->rgba[4 * i + c]);
+                sum += d * d;
+                largest = fmax(largest, d);
+            }
+            pixels++;
+        }
+        worst = fmax(worst, largest);
+        if (map)
+            map[i] = (float)largest;
+    }
+    out->rmse = pixels ? sqrt(sum / (3.0 * (double)pixels)) : 0.0;
+    out->max_error = worst;
+    out->pixels = pixels;
+}
