@@ -29,10 +29,11 @@
  *
  * OBJ: `v x y z [w]`, `vn x y z`, `f` with `i`, `i/t`, `i//n`, `i/t/n` corners (1-based or
  * negative = relative, referring to elements defined earlier), polygons split into fans;
- * `vt`, `o`, `g`, `s`, `usemtl`, `mtllib`, `l`, `p`, comments and blank lines are ignored. A
- * vertex used with two different normals is split in two. If only some faces give normals,
- * normals are dropped (NULL). Malformed lines (a bad or non-finite number, an index out of
- * range, a face of fewer than 3 corners) fail with "PATH:LINE: reason". Written files have
+ * `vt`, `vp`, `o`, `g`, `s`, `usemtl`, `mtllib`, `l`, `p`, comments and blank lines are
+ * ignored. A vertex used with two different normals is split in two. If only some faces give
+ * normals, normals are dropped (NULL). Malformed lines (a bad or non-finite number, an index
+ * out of range, a face of fewer than 3 corners, any other statement) and files without faces
+ * fail with "PATH:LINE: reason". Written files have
  * v, vn (if normals), vt (if uv) and `f a/b/c` lines, numbers with 9 significant digits (floats
  * round-trip exactly).
  *
