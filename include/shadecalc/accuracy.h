@@ -4,6 +4,7 @@
  *   sc_accuracy_table, sc_accuracy_count   one row per function: its binary32 kernel, the double
  *                                          reference, the stated domain and bound in ULP
  *   sc_accuracy_sample                     a binary32 input with magnitude-biased exponent
+ *   sc_accuracy_random                     its random bits
  *   sc_accuracy_measure                    max and mean ULP error over the special values
  *                                          crossed over all arguments, then random inputs
  *
@@ -43,6 +44,8 @@ typedef struct {
 
 /* Uniform exponent and mantissa, random sign allowed when lo < 0, within [lo, hi]. */
 float sc_accuracy_sample(uint64_t *state, double lo, double hi);
+/* The generator behind it (xorshift64*): the next 64 random bits of *state. */
+uint64_t sc_accuracy_random(uint64_t *state);
 
 /* Measures row r on the special-value table (all combinations) and n_random random inputs:
  * half magnitude-biased, a quarter uniform in value over the domain, a quarter in [0.5, 2]

@@ -10,6 +10,9 @@
  *                                       bound and input domain (the table that drives dispatch,
  *                                       `shadecalc bench`, its --list and the man page)
  *   sc_batch_find                       one entry of the table
+ *   sc_batch_sample                     random inputs in an entry's domain (tests, bench)
+ *   sc_batch_error_of                   max/mean ULP, max relative/absolute error, bound ratio
+ *   sc_batch_scene_example              the standard scenes of the tests and the bench
  *   sc_batch_run                        run a kernel by name and tier on the active ISA
  *
  * Tiers name their worst-case error like SLEEF's _u10/_u35: `u1` (<= 1 ULP against the double
@@ -21,6 +24,7 @@
 #define SHADECALC_BATCH_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 typedef enum { SC_ISA_SCALAR, SC_ISA_SSE41, SC_ISA_AVX2, SC_ISA_COUNT } sc_isa;
 
@@ -42,16 +46,19 @@ typedef enum { SC_BATCH_DIRECTIONAL, SC_BATCH_POINT } sc_batch_light_kind;
 
 typedef struct {
     sc_batch_light_kind kind;
-    float dir[3];       /* directional: unit vector toward the light */
-    float pos[3];       /* point */
-    float color[3];     /* E_L (directional) or I_L (point, times 1/max(r², 1e-4)) */
+    float dir[3];   /* directional: unit vector toward the light */
+    float pos[3];   /* point */
+    float color[3]; /* E_L (directional) or I_L (point: E_L = I_L / max(r², 10^-4)) */
 } sc_batch_light;
 
 typedef enum { SC_BATCH_LAMBERT, SC_BATCH_BLINN_PHONG, SC_BATCH_GGX } sc_batch_brdf;
 
-/* The shading equation of SPEC §6 with one BRDF: lambert c_diff/π; blinn-phong normalized
- * c_diff/π + c_spec (m+8)/(8π) (n·h)^m; ggx c_diff/π + D_GGX·G_Smith-correlated·F_Schlick /
- * (4 n·l n·v) with α, F0. Ambient: c_amb ⊙ L_A. */
+/* The shading equation of SPEC §6 with one BRDF, L = c_amb ⊙ L_A + Σ_k f(l_k, v) ⊙ E_k cos θ_i:
+ * lambert c_diff/π; blinn-phong (normalized) c_diff/π + c_spec (m+8)/(8π) (n·h)^m, m >= 1;
+ * ggx c_diff/π + c_spec D_GGX V_Smith-correlated F_Schlick(f0) (the cook-torrance model of
+ * brdf.h with D=ggx G=smith-correlated F=schlick). f = 0 where n·l <= 0 or n·v <= 0; a point
+ * light at the shading point lights nothing. The kernel computes only what the scene names: a
+ * directional light costs no distance or falloff, a lambert scene no specular lobe. */
 typedef struct {
     sc_batch_light lights[SC_BATCH_MAX_LIGHTS];
     int n_lights;
@@ -60,10 +67,23 @@ typedef struct {
     float m, alpha, f0;
 } sc_batch_scene;
 
+/* The scenes of the tests and of `shadecalc bench`: n_dir directional and n_point point lights
+ * around +y, diff 0.8/0.5/0.2, spec 0.2 (ggx: 1), m 32, α 0.3, f0 0.04, ambient 0.02. */
+void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, sc_batch_scene *out);
+const char *sc_batch_brdf_name(sc_batch_brdf brdf);
+
 /* ---- kernels ---- */
 
-/* Arguments of every kernel: in[i] are the input arrays (for shading: nx ny nz vx vy vz px py
- * pz), out[j] the output arrays, scene the shading uniforms (NULL otherwise). */
+/* Arguments of every kernel: in[i] are the input arrays, out[j] the output arrays, scene the
+ * shading uniforms (NULL for the others). Inputs by kernel:
+ *   exp2 exp log2 log inversesqrt sqrt   x                  out: value
+ *   pow                                  x y                out: value
+ *   dot                                  ax ay az bx by bz  out: value
+ *   reflect                              Ix Iy Iz Nx Ny Nz  out: x y z
+ *   normalize                            x y z              out: x y z
+ *   length                               x y z              out: value
+ *   shade                                nx ny nz vx vy vz px py pz (n, v need not be unit;
+ *                                        p is read only for point lights)   out: r g b */
 typedef struct {
     const float *in[9];
     float *out[3];
@@ -73,26 +93,52 @@ typedef struct {
 
 typedef void (*sc_batch_fn)(const sc_batch_args *a);
 
-/* The double-precision reference of a kernel for element i: out[j] gets output j. */
+/* The double-precision reference of a kernel for element i: out[j] gets output j, and
+ * out[n_out] the scale of the absolute error allowance (1 where the bound is relative only). */
 typedef void (*sc_batch_ref_fn)(const sc_batch_args *a, size_t i, double *out);
 
+/* Random inputs in the kernel's domain for one element (in[0..n_in−1]). */
+typedef void (*sc_batch_gen_fn)(uint64_t *rng, float *in);
+
 typedef struct {
-    const char *kernel; /* "pow", "normalize", "shade-blinn-phong" */
-    const char *tier;   /* "u1", "u4", "bits12", "bits8" */
+    const char *kernel; /* "pow", "normalize", "shade" */
+    const char *tier;   /* "u1", "u4", "bits12", "bits8", …: the name states the bound */
     sc_isa isa;
     sc_batch_fn fn;
     sc_batch_ref_fn ref;
     int n_in, n_out;
     double bound_ulp;   /* the stated bound in ULP, or 0 when stated as relative error */
     double bound_rel;   /* the stated bound as relative error, or 0 */
-    double bound_abs;   /* absolute error allowed besides (results near 0 of sums), or 0 */
+    double bound_abs;   /* besides: absolute error allowed, times the reference's scale */
     const char *domain; /* the input domain, as the man page states it */
-    double lo[2], hi[2];/* random inputs for the test and the bench: in[0], in[1] ranges */
-    double ops;         /* arithmetic operations per element (for the roofline) */
+    double lo[2], hi[2];/* random inputs for x and y (one-argument kernels), or: */
+    sc_batch_gen_fn gen;/* the generator of vector inputs (NULL for x, y kernels) */
+    double ops;         /* arithmetic operations per element, per light for shade */
 } sc_batch_entry;
 
 extern const sc_batch_entry sc_batch_table[];
 extern const int sc_batch_count;
+
+/* One random element of e's inputs in its stated domain (magnitude-biased or uniform). */
+void sc_batch_sample(const sc_batch_entry *e, uint64_t *rng, float *in);
+
+/* ---- accuracy ---- */
+
+typedef struct {
+    double max_ratio;  /* the worst error as a fraction of the stated bound (> 1: broken) */
+    size_t worst;      /* the element where it occurred */
+    double max_ulp, sum_ulp; /* ULPs of binary32 at the reference, over finite errors */
+    long count;        /* outputs counted in sum_ulp */
+    double max_rel, max_abs;
+} sc_batch_error;
+
+void sc_batch_error_init(sc_batch_error *acc);
+/* Adds element i of a finished run of e (a->out filled) to acc; returns its bound ratio. The
+ * pow u1 row counts only normal-float results (its stated domain). */
+double sc_batch_error_element(const sc_batch_entry *e, const sc_batch_args *a, size_t i,
+                              sc_batch_error *acc);
+/* All a->n elements. */
+void sc_batch_error_of(const sc_batch_entry *e, const sc_batch_args *a, sc_batch_error *acc);
 
 /* The entry for kernel × tier × isa, or NULL. */
 const sc_batch_entry *sc_batch_find(const char *kernel, const char *tier, sc_isa isa);

@@ -43,7 +43,7 @@ static const float specials[] = {
 enum { N_SPECIALS = (int)(sizeof specials / sizeof specials[0]) };
 
 /* xorshift64*: a small deterministic generator. */
-static uint64_t next_random(uint64_t *s)
+uint64_t sc_accuracy_random(uint64_t *s)
 {
     *s ^= *s >> 12;
     *s ^= *s << 25;
@@ -58,7 +58,7 @@ float sc_accuracy_sample(uint64_t *state, double lo, double hi)
         return (float)lo;
     int max_exp = ilogb(top) + 1, min_exp = -149;
     for (;;) {
-        uint64_t r = next_random(state);
+        uint64_t r = sc_accuracy_random(state);
         int e = min_exp + (int)((r >> 40) % (uint64_t)(max_exp - min_exp + 1));
         double mant = 1.0 + (double)(r & 0x7fffff) / 0x800000;
         double x = ldexp(mant, e - 1);
@@ -151,7 +151,7 @@ void sc_accuracy_measure(const sc_accuracy_row *r, long n_random, uint64_t seed,
                 a[i] = sc_accuracy_sample(&state, 0.5, 2.0);
             else if ((k & 3) == 1) /* uniform in value: the large arguments of trig */
                 a[i] = (float)(r->lo[i] + (r->hi[i] - r->lo[i]) *
-                                              ((double)(next_random(&state) >> 11) * 0x1p-53));
+                                              ((double)(sc_accuracy_random(&state) >> 11) * 0x1p-53));
             else
                 a[i] = sc_accuracy_sample(&state, r->lo[i], r->hi[i]);
         }

@@ -3,6 +3,7 @@
  * SIMD u1 kernels reproduce. */
 #include "simd/scalar_vec.h"
 #include "simd/kernels_impl.h"
+#include "simd/shade_impl.h"
 
 BATCH1(exp2_u1, sc_exp2f)
 BATCH1(exp_u1, sc_expf)

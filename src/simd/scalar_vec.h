@@ -1,6 +1,7 @@
 /* The vector helpers of the batch kernels for plain C: one lane, the readable specification of
  * every fast tier (src/simd/kernels_impl.h). The rsqrt estimate is the bit-trick guess with two
- * Newton steps (relative error below 2^-17), where the SIMD ones use rsqrtps. */
+ * Newton steps (relative error below 2^-17), where the SIMD ones use rsqrtps; the reciprocal
+ * estimate is a division, where they use rcpps. */
 #ifndef SHADECALC_SIMD_SCALAR_VEC_H
 #define SHADECALC_SIMD_SCALAR_VEC_H
 
@@ -63,5 +64,8 @@ static inline vf vf_rsqrt_est(vf x)
     y = y * (1.5f - 0.5f * x * y * y);
     return y * (1.5f - 0.5f * x * y * y);
 }
+
+/* the reciprocal: rcpps's 2^-12 estimate is a hardware detail; one lane divides */
+static inline vf vf_rcp_est(vf x) { return 1.0f / x; }
 
 #endif

@@ -1,3 +1,4 @@
 /* The batch kernels for SSE4.1 (src/simd/kernels_impl.h over sse41/vec.h). */
 #include "simd/sse41/vec.h"
 #include "simd/kernels_impl.h"
+#include "simd/shade_impl.h"

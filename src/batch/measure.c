@@ -1,0 +1,69 @@
+/* Accuracy of a batch kernel's outputs against its double reference (shadecalc/batch.h):
+ * the figures of `shadecalc bench` and the check of tests/unit/test_batch.c. */
+#include <math.h>
+#include <string.h>
+
+#include "shadecalc/batch.h"
+#include "shadecalc/precision.h"
+
+/* The pow u1 domain rule of the scalar built-ins: only normal-float results are stated. */
+static int stated(const sc_batch_entry *e, double ref)
+{
+    if (strcmp(e->kernel, "pow") != 0 || strcmp(e->tier, "u1") != 0)
+        return 1;
+    return fabs(ref) >= 0x1p-126 && fabs(ref) <= 0x1.fffffep127;
+}
+
+/* got against ref as a fraction of e's bound: ULPs, or relative error with the absolute
+ * allowance times the reference's scale. Both NaN, or the same overflow: 0. */
+static double bound_ratio(const sc_batch_entry *e, float got, double ref, double scale)
+{
+    if (isnan(ref) && isnan(got))
+        return 0.0;
+    if (isinf((float)ref) && got == (float)ref)
+        return 0.0;
+    if (e->bound_ulp > 0)
+        return sc_ulp_error(SC_HIGHP, (double)got, ref) / e->bound_ulp;
+    double err = fabs((double)got - ref);
+    if (err == 0.0)
+        return 0.0;
+    return err / (e->bound_rel * fabs(ref) + e->bound_abs * scale);
+}
+
+void sc_batch_error_init(sc_batch_error *acc) { memset(acc, 0, sizeof *acc); }
+
+double sc_batch_error_element(const sc_batch_entry *e, const sc_batch_args *a, size_t i,
+                              sc_batch_error *acc)
+{
+    double ref[4], worst = 0.0;
+    e->ref(a, i, ref);
+    for (int j = 0; j < e->n_out; j++) {
+        if (!stated(e, ref[j]))
+            continue;
+        float got = a->out[j][i];
+        double ratio = bound_ratio(e, got, ref[j], ref[e->n_out]);
+        double ulp = sc_ulp_error(SC_HIGHP, (double)got, ref[j]);
+        double abs_err = fabs((double)got - ref[j]);
+        worst = fmax(worst, ratio);
+        if (isfinite(ulp)) {
+            acc->max_ulp = fmax(acc->max_ulp, ulp);
+            acc->sum_ulp += ulp;
+            acc->count++;
+        }
+        if (isfinite(abs_err) && ref[j] != 0.0)
+            acc->max_rel = fmax(acc->max_rel, abs_err / fabs(ref[j]));
+        if (isfinite(abs_err))
+            acc->max_abs = fmax(acc->max_abs, abs_err);
+    }
+    if (worst > acc->max_ratio) {
+        acc->max_ratio = worst;
+        acc->worst = i;
+    }
+    return worst;
+}
+
+void sc_batch_error_of(const sc_batch_entry *e, const sc_batch_args *a, sc_batch_error *acc)
+{
+    for (size_t i = 0; i < a->n; i++)
+        sc_batch_error_element(e, a, i, acc);
+}

@@ -1,0 +1,264 @@
+/* The vec3 and shading batch kernels, written once against the vector helpers and included
+ * after src/simd/kernels_impl.h by each instruction set's file.
+ *
+ * Tiers differ only in the few operations below (tier_rsqrt, tier_rcp, tier_sqrt, tier_pow):
+ *   ACCURATE  sqrt and division rounded once; pow as the u1 kernel (double lanes)
+ *   FAST12    rsqrt / rcp estimate with one Newton step; pow_bits12
+ *   FAST8     the bare estimate instructions; pow_bits8. The shading kernel keeps the Newton
+ *             step in its normalizations even here: (n·h)^m multiplies the relative error of
+ *             n·h by m, and 3 · 2^-12 · 32 would be 2^-5.4.
+ * The tier argument is a constant at every call, so each kernel compiles to straight-line code
+ * with no branch on the tier.
+ */
+
+enum { ACCURATE, FAST12, FAST8 };
+enum { MAX_IN = 9, MAX_OUT = 3 };
+
+/* ---- driver: k input arrays, m output arrays ---- */
+
+typedef void (*lane_n_fn)(const vf *in, vf *out, const sc_batch_scene *scene);
+
+static inline void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
+{
+    vf in[MAX_IN], out[MAX_OUT];
+    size_t i = 0;
+    for (; i + VW <= a->n; i += VW) {
+        for (int j = 0; j < k; j++)
+            in[j] = vf_loadu(a->in[j] + i);
+        f(in, out, a->scene);
+        for (int j = 0; j < m; j++)
+            vf_storeu(a->out[j] + i, out[j]);
+    }
+    if (i == a->n)
+        return;
+    float buf[VW];
+    for (int j = 0; j < k; j++) { /* the tail, padded with 1 */
+        for (int l = 0; l < VW; l++)
+            buf[l] = i + (size_t)l < a->n ? a->in[j][i + (size_t)l] : 1.0f;
+        in[j] = vf_loadu(buf);
+    }
+    f(in, out, a->scene);
+    for (int j = 0; j < m; j++) {
+        vf_storeu(buf, out[j]);
+        for (size_t l = 0; i + l < a->n; l++)
+            a->out[j][i + l] = buf[l];
+    }
+}
+
+#define BATCH_N(name, k, m, lane)                                                                 \
+    void K(name)(const sc_batch_args *a);                                                         \
+    void K(name)(const sc_batch_args *a) { run_n(a, k, m, lane); }
+
+/* ---- the operations tiers choose ---- */
+
+static inline vf rcp_newton(vf x) /* r (2 − x r) */
+{
+    vf r = vf_rcp_est(x);
+    return vf_mul(r, vf_sub(vf_set1(2.0f), vf_mul(x, r)));
+}
+
+static inline vf tier_rsqrt(int tier, vf x)
+{
+    if (tier == ACCURATE)
+        return vf_div(vf_set1(1.0f), vf_sqrt(x));
+    return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
+}
+
+static inline vf tier_rcp(int tier, vf x)
+{
+    if (tier == ACCURATE)
+        return vf_div(vf_set1(1.0f), x);
+    return tier == FAST12 ? rcp_newton(x) : vf_rcp_est(x);
+}
+
+/* sqrt of x > 0 */
+static inline vf tier_sqrt(int tier, vf x)
+{
+    return tier == ACCURATE ? vf_sqrt(x) : vf_mul(x, tier_rsqrt(tier, x));
+}
+
+/* x^y for x in [2^-126, 1], y >= 1: the specular lobe (no special cases reach it) */
+static inline vf tier_pow(int tier, vf x, vf y)
+{
+    if (tier == FAST12)
+        return pow_bits12(x, y);
+    if (tier == FAST8)
+        return pow_bits8(x, y);
+#ifdef SIMD_HAS_DOUBLE
+    return vf_from_vd(pow_half(vd_from_lo(x), vd_from_lo(y)), pow_half(vd_from_hi(x), vd_from_hi(y)));
+#else
+    return sc_powf(x, y);
+#endif
+}
+
+/* ---- vec3 ---- */
+
+typedef struct {
+    vf x, y, z;
+} v3;
+
+static inline v3 v3_load(const vf *in) { return (v3){in[0], in[1], in[2]}; }
+static inline void v3_store(v3 a, vf *out)
+{
+    out[0] = a.x;
+    out[1] = a.y;
+    out[2] = a.z;
+}
+static inline vf v3_dot(v3 a, v3 b) { return vf_fma(a.x, b.x, vf_fma(a.y, b.y, vf_mul(a.z, b.z))); }
+static inline v3 v3_scale(v3 a, vf s) { return (v3){vf_mul(a.x, s), vf_mul(a.y, s), vf_mul(a.z, s)}; }
+static inline v3 v3_add(v3 a, v3 b) { return (v3){vf_add(a.x, b.x), vf_add(a.y, b.y), vf_add(a.z, b.z)}; }
+static inline v3 v3_sub(v3 a, v3 b) { return (v3){vf_sub(a.x, b.x), vf_sub(a.y, b.y), vf_sub(a.z, b.z)}; }
+static inline v3 v3_set1(const float *c) { return (v3){vf_set1(c[0]), vf_set1(c[1]), vf_set1(c[2])}; }
+
+/* a / |a| given dd = a·a. The zero vector stays zero (dd is taken at least 2^-149); lanes
+ * whose dd overflowed are scaled by 2^-100 first (rare: a branch, not a cost on every vector). */
+static inline v3 v3_normalize_dd(int tier, v3 a, vf dd)
+{
+    vm big = vf_eq(dd, vf_set1(INFINITY));
+    if (vm_any(big)) {
+        a = v3_scale(a, vf_select(big, vf_set1(0x1p-100f), vf_set1(1.0f)));
+        dd = v3_dot(a, a);
+    }
+    dd = vf_max(dd, vf_set1(0x1p-149f));
+    if (tier == ACCURATE) {
+        vf len = vf_sqrt(dd);
+        return (v3){vf_div(a.x, len), vf_div(a.y, len), vf_div(a.z, len)};
+    }
+    return v3_scale(a, tier_rsqrt(tier, dd));
+}
+
+static inline v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
+
+static inline void dot_lane(const vf *in, vf *out, const sc_batch_scene *s)
+{
+    (void)s;
+    out[0] = v3_dot(v3_load(in), v3_load(in + 3));
+}
+
+/* reflect(I, N) = I − 2 (N·I) N (GLSL ES; N unit) */
+static inline void reflect_lane(const vf *in, vf *out, const sc_batch_scene *s)
+{
+    (void)s;
+    v3 i = v3_load(in), n = v3_load(in + 3);
+    vf k = vf_mul(vf_set1(-2.0f), v3_dot(n, i));
+    v3_store((v3){vf_fma(k, n.x, i.x), vf_fma(k, n.y, i.y), vf_fma(k, n.z, i.z)}, out);
+}
+
+static inline void length_tier(int tier, const vf *in, vf *out)
+{
+    v3 a = v3_load(in);
+    vf dd = v3_dot(a, a);
+    if (tier == ACCURATE) {
+        out[0] = vf_sqrt(dd);
+        return;
+    }
+    vf est = vf_mul(dd, tier_rsqrt(tier, vf_max(dd, vf_set1(FLT_MIN))));
+    out[0] = vf_select(vf_eq(dd, vf_set1(INFINITY)), dd, est); /* not ∞ · 0 */
+}
+
+#define TIERED_LANE(name, body_fn, tier)                                                          \
+    static inline void name(const vf *in, vf *out, const sc_batch_scene *s)                       \
+    {                                                                                             \
+        (void)s;                                                                                  \
+        body_fn(tier, in, out);                                                                   \
+    }
+
+static inline void normalize_tier(int tier, const vf *in, vf *out)
+{
+    v3_store(v3_normalize(tier, v3_load(in)), out);
+}
+
+TIERED_LANE(normalize_acc, normalize_tier, ACCURATE)
+TIERED_LANE(normalize_f12, normalize_tier, FAST12)
+TIERED_LANE(normalize_f8, normalize_tier, FAST8)
+TIERED_LANE(length_acc, length_tier, ACCURATE)
+TIERED_LANE(length_f12, length_tier, FAST12)
+TIERED_LANE(length_f8, length_tier, FAST8)
+BATCH_N(dot_bits22, 6, 1, dot_lane)
+BATCH_N(reflect_bits22, 6, 3, reflect_lane)
+BATCH_N(normalize_u3, 3, 3, normalize_acc)
+BATCH_N(normalize_bits21, 3, 3, normalize_f12)
+BATCH_N(normalize_bits11, 3, 3, normalize_f8)
+BATCH_N(length_u2, 3, 1, length_acc)
+BATCH_N(length_bits21, 3, 1, length_f12)
+BATCH_N(length_bits11, 3, 1, length_f8)
+
+/* ---- the shading equation (SPEC §6): L = c_amb ⊙ L_A + Σ f(l, v) ⊙ E_L cos θ_i ---- */
+
+static const float inv_pi_f = 0.318309886183790671538f;
+
+/* The specular part of f for one light (n, v unit; l unit), 0 for Lambert. nt is the tier of
+ * the normalizations. */
+static inline vf specular(int tier, int nt, const sc_batch_scene *s, v3 n, v3 v, v3 l, vf nl, vf nv)
+{
+    v3 h = v3_add(l, v);
+    vf inv_h = tier_rsqrt(nt, vf_max(v3_dot(h, h), vf_set1(FLT_MIN))); /* l = −v: h = 0 */
+    vf nh = vf_max(vf_mul(v3_dot(n, h), inv_h), vf_set1(FLT_MIN));
+    if (s->brdf == SC_BATCH_BLINN_PHONG) /* (m+8)/(8π) (n·h)^m: RTR3 §7.6 */
+        return vf_mul(vf_set1((s->m + 8.0f) * (inv_pi_f / 8.0f)), tier_pow(tier, nh, vf_set1(s->m)));
+    /* GGX D = α² / (π (n·h² (α² − 1) + 1)²); V = G2/(4 n·l n·v) for Smith height-correlated
+     * = 1 / (2 (n·l √(n·v² (1 − α²) + α²) + n·v √(n·l² (1 − α²) + α²))) (Heitz 2014 eq. 99);
+     * F = F0 + (1 − F0)(1 − v·h)^5 (Schlick 1994). */
+    vf a2 = vf_set1(s->alpha * s->alpha), one_a2 = vf_set1(1.0f - s->alpha * s->alpha);
+    vf d = vf_fma(vf_mul(nh, nh), vf_sub(a2, vf_set1(1.0f)), vf_set1(1.0f));
+    vf D = vf_mul(vf_mul(a2, vf_set1(inv_pi_f)), tier_rcp(tier, vf_mul(d, d)));
+    vf gv = vf_mul(nl, tier_sqrt(tier, vf_fma(vf_mul(nv, nv), one_a2, a2)));
+    vf gl = vf_mul(nv, tier_sqrt(tier, vf_fma(vf_mul(nl, nl), one_a2, a2)));
+    vf V = tier_rcp(tier, vf_mul(vf_set1(2.0f), vf_add(gv, gl)));
+    vf vh = vf_max(vf_mul(v3_dot(v, h), inv_h), vf_set1(0.0f));
+    vf c = vf_sub(vf_set1(1.0f), vh), c2 = vf_mul(c, c);
+    vf F = vf_fma(vf_set1(1.0f - s->f0), vf_mul(vf_mul(c2, c2), c), vf_set1(s->f0));
+    return vf_mul(vf_mul(D, V), F);
+}
+
+/* Direction to light k and its irradiance factor (E_L, or I_L / max(r², 10^-4) for a point
+ * light; a light at the shading point lights nothing: l = 0). */
+static inline v3 light_dir(int tier, int nt, const sc_batch_light *lt, const vf *in,
+                           vf *falloff)
+{
+    if (lt->kind == SC_BATCH_DIRECTIONAL) {
+        *falloff = vf_set1(1.0f);
+        return v3_set1(lt->dir);
+    }
+    v3 d = v3_sub(v3_set1(lt->pos), v3_load(in + 6));
+    vf r2 = v3_dot(d, d);
+    *falloff = tier_rcp(tier, vf_min(vf_max(r2, vf_set1(1e-4f)), vf_set1(FLT_MAX)));
+    return v3_normalize_dd(nt, d, r2);
+}
+
+static inline void shade_tier(int tier, const vf *in, vf *out, const sc_batch_scene *s)
+{
+    int nt = tier == FAST8 ? FAST12 : tier;
+    v3 n = v3_normalize(nt, v3_load(in)), v = v3_normalize(nt, v3_load(in + 3));
+    vf nv = v3_dot(n, v);
+    vf acc[3] = {vf_set1(s->amb_term[0]), vf_set1(s->amb_term[1]), vf_set1(s->amb_term[2])};
+    for (int k = 0; k < s->n_lights; k++) {
+        const sc_batch_light *lt = &s->lights[k];
+        vf falloff;
+        v3 l = light_dir(tier, nt, lt, in, &falloff);
+        vf nl = v3_dot(n, l);
+        vm lit = vm_and(vf_lt(vf_set1(0.0f), nl), vf_lt(vf_set1(0.0f), nv));
+        vf w = vf_select(lit, vf_mul(nl, falloff), vf_set1(0.0f)); /* cos θ_i · falloff */
+        vf sp = vf_set1(0.0f); /* unlit lanes drop the lobe: it may be ∞ or NaN there */
+        if (s->brdf != SC_BATCH_LAMBERT)
+            sp = vf_select(lit, specular(tier, nt, s, n, v, l, nl, nv), sp);
+        for (int c = 0; c < 3; c++) {
+            vf f = vf_fma(vf_set1(s->spec[c]), sp, vf_set1(s->diff[c] * inv_pi_f));
+            acc[c] = vf_fma(vf_mul(f, vf_set1(lt->color[c])), w, acc[c]);
+        }
+    }
+    for (int c = 0; c < 3; c++)
+        out[c] = acc[c];
+}
+
+#define SHADE_LANE(name, tier)                                                                    \
+    static inline void name(const vf *in, vf *out, const sc_batch_scene *s)                       \
+    {                                                                                             \
+        shade_tier(tier, in, out, s);                                                             \
+    }
+SHADE_LANE(shade_acc, ACCURATE)
+SHADE_LANE(shade_f12, FAST12)
+SHADE_LANE(shade_f8, FAST8)
+BATCH_N(shade_accurate, 9, 3, shade_acc)
+BATCH_N(shade_bits12, 9, 3, shade_f12)
+BATCH_N(shade_bits8, 9, 3, shade_f8)
