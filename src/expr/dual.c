@@ -17,36 +17,43 @@ typedef struct {
     sc_dual_value slots[SC_EXPR_MAX_STATEMENTS];
 } dual_state;
 
-static sc_value zero_of(sc_type t) {
+static sc_value zero_of(sc_type t)
+{
     return (sc_value){t, {0}};
 }
 
-static sc_dual_value constant(sc_value x) {
+static sc_dual_value constant(sc_value x)
+{
     sc_dual_value out = {x, {zero_of(x.type), zero_of(x.type)}};
     return out;
 }
 
 /* Component k of v, a float broadcasting to every k. */
-static double comp(const sc_value *v, int k) {
+static double comp(const sc_value *v, int k)
+{
     return v->v[v->type == SC_FLOAT ? 0 : k];
 }
 
-static sc_value binary(int op, sc_type type, const sc_value *a, const sc_value *b) {
+static sc_value binary(int op, sc_type type, const sc_value *a, const sc_value *b)
+{
     return sc_expr_binary(SC_DOUBLE, op, type, a, b);
 }
 
-static sc_value add(const sc_value *a, const sc_value *b) {
+static sc_value add(const sc_value *a, const sc_value *b)
+{
     return binary('+', a->type, a, b);
 }
 
-static sc_value scaled(const sc_value *a, double s) {
+static sc_value scaled(const sc_value *a, double s)
+{
     return binary('*', a->type, a, &(sc_value){SC_FLOAT, {s}});
 }
 
 /* ---- arithmetic ---- */
 
 /* Component-wise a / b (GLSL divides matrices component-wise too): d(a/b) = (da − q·db)/b. */
-static sc_dual_value divide(sc_type type, const sc_dual_value *a, const sc_dual_value *b) {
+static sc_dual_value divide(sc_type type, const sc_dual_value *a, const sc_dual_value *b)
+{
     sc_dual_value out = constant(zero_of(type));
     for (int k = 0; k < sc_type_size(type); k++) {
         double bk = comp(&b->x, k), q = comp(&a->x, k) / bk;
@@ -58,8 +65,10 @@ static sc_dual_value divide(sc_type type, const sc_dual_value *a, const sc_dual_
 }
 
 static sc_dual_value dual_binary(int op, sc_type type, const sc_dual_value *a,
-                                 const sc_dual_value *b) {
-    if (op == '/') return divide(type, a, b);
+                                 const sc_dual_value *b)
+{
+    if (op == '/')
+        return divide(type, a, b);
     sc_dual_value out;
     out.x = binary(op, type, &a->x, &b->x);
     for (int j = 0; j < SC_DUAL_DIRS; j++) {
@@ -76,7 +85,8 @@ static sc_dual_value dual_binary(int op, sc_type type, const sc_dual_value *a,
 
 /* Constructors are affine (matN(matM) fills from the identity): a tangent is
  * construct(tangents) − construct(zeros). */
-static sc_dual_value dual_construct(sc_type type, const sc_dual_value *args, int n) {
+static sc_dual_value dual_construct(sc_type type, const sc_dual_value *args, int n)
+{
     sc_value xs[16], ds[16], zeros[16];
     sc_dual_value out;
     for (int i = 0; i < n; i++) {
@@ -103,13 +113,15 @@ typedef struct {
     sc_value x; /* the built-in's value */
 } dual_call;
 
-static sc_value builtin(int index, const sc_value *args, int n_args) {
+static sc_value builtin(int index, const sc_value *args, int n_args)
+{
     call_context ctx = {SC_DOUBLE, 0, sc_builtin_name(index), NULL, NULL};
     return sc_builtin_eval(index, &ctx, args, n_args);
 }
 
 /* The built-in applied to the values, with argument `i` replaced by its tangent along j. */
-static sc_value with_tangent(const dual_call *c, int i, int j) {
+static sc_value with_tangent(const dual_call *c, int i, int j)
+{
     sc_value args[3];
     for (int a = 0; a < c->n_args; a++)
         args[a] = a == i ? c->args[a].d[j] : c->args[a].x;
@@ -119,107 +131,130 @@ static sc_value with_tangent(const dual_call *c, int i, int j) {
 /* Partial derivatives of a component-wise built-in f(a0, a1, a2) with value f. */
 typedef void (*partials_fn)(const double *a, double f, double *df);
 
-static void d_zero(const double *a, double f, double *df) {
+static void d_zero(const double *a, double f, double *df)
+{
     (void)a;
     (void)f;
     df[0] = df[1] = df[2] = 0.0;
 }
-static void d_one(const double *a, double f, double *df) {
+static void d_one(const double *a, double f, double *df)
+{
     d_zero(a, f, df);
     df[0] = 1.0;
 }
-static void d_radians(const double *a, double f, double *df) {
+static void d_radians(const double *a, double f, double *df)
+{
     (void)a;
     (void)f;
     df[0] = (PI / 180.0);
 }
-static void d_degrees(const double *a, double f, double *df) {
+static void d_degrees(const double *a, double f, double *df)
+{
     (void)a;
     (void)f;
     df[0] = (180.0 / PI);
 }
-static void d_sin(const double *a, double f, double *df) {
+static void d_sin(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = cos(a[0]);
 }
-static void d_cos(const double *a, double f, double *df) {
+static void d_cos(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = -sin(a[0]);
 }
-static void d_tan(const double *a, double f, double *df) {
+static void d_tan(const double *a, double f, double *df)
+{
     (void)a;
     df[0] = 1.0 + f * f;
 }
-static void d_asin(const double *a, double f, double *df) {
+static void d_asin(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = 1.0 / sqrt(1.0 - a[0] * a[0]);
 }
-static void d_acos(const double *a, double f, double *df) {
+static void d_acos(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = -1.0 / sqrt(1.0 - a[0] * a[0]);
 }
-static void d_atan(const double *a, double f, double *df) {
+static void d_atan(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = 1.0 / (1.0 + a[0] * a[0]);
 }
-static void d_exp(const double *a, double f, double *df) {
+static void d_exp(const double *a, double f, double *df)
+{
     (void)a;
     df[0] = f;
 }
-static void d_log(const double *a, double f, double *df) {
+static void d_log(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = 1.0 / a[0];
 }
-static void d_exp2(const double *a, double f, double *df) {
+static void d_exp2(const double *a, double f, double *df)
+{
     (void)a;
     df[0] = f * LN2;
 }
-static void d_log2(const double *a, double f, double *df) {
+static void d_log2(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = 1.0 / (a[0] * LN2);
 }
-static void d_sqrt(const double *a, double f, double *df) {
+static void d_sqrt(const double *a, double f, double *df)
+{
     (void)a;
     df[0] = 0.5 / f;
 }
-static void d_inversesqrt(const double *a, double f, double *df) {
+static void d_inversesqrt(const double *a, double f, double *df)
+{
     df[0] = -0.5 * f / a[0];
 }
-static void d_abs(const double *a, double f, double *df) {
+static void d_abs(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = a[0] > 0.0 ? 1.0 : a[0] < 0.0 ? -1.0 : 0.0;
 }
 /* atan(y, x): ∂/∂y = x/(x² + y²), ∂/∂x = −y/(x² + y²). */
-static void d_atan2(const double *a, double f, double *df) {
+static void d_atan2(const double *a, double f, double *df)
+{
     (void)f;
     double r2 = a[0] * a[0] + a[1] * a[1];
     df[0] = a[1] / r2;
     df[1] = -a[0] / r2;
 }
 /* pow(x, y) = x^y: ∂/∂x = y·x^(y−1), ∂/∂y = x^y·ln x (0 where x <= 0, the limit as x → 0+). */
-static void d_pow(const double *a, double f, double *df) {
+static void d_pow(const double *a, double f, double *df)
+{
     df[0] = a[1] * pow(a[0], a[1] - 1.0);
     df[1] = a[0] > 0.0 ? f * log(a[0]) : 0.0;
 }
 /* mod(x, y) = x − y·floor(x/y). */
-static void d_mod(const double *a, double f, double *df) {
+static void d_mod(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = 1.0;
     df[1] = -floor(a[0] / a[1]);
 }
 /* min(x, y) = y < x ? y : x and max(x, y) = x < y ? y : x (pmath.c): the branch taken. */
-static void d_min(const double *a, double f, double *df) {
+static void d_min(const double *a, double f, double *df)
+{
     (void)f;
     df[1] = a[1] < a[0];
     df[0] = 1.0 - df[1];
 }
-static void d_max(const double *a, double f, double *df) {
+static void d_max(const double *a, double f, double *df)
+{
     (void)f;
     df[1] = a[0] < a[1];
     df[0] = 1.0 - df[1];
 }
 /* clamp(x, lo, hi) = min(max(x, lo), hi). */
-static void d_clamp(const double *a, double f, double *df) {
+static void d_clamp(const double *a, double f, double *df)
+{
     (void)f;
     double m = a[0] < a[1] ? a[1] : a[0];
     int high = a[2] < m;
@@ -228,7 +263,8 @@ static void d_clamp(const double *a, double f, double *df) {
     df[0] = !high && !(a[0] < a[1]);
 }
 /* mix(x, y, a) = x(1 − a) + y·a. */
-static void d_mix(const double *a, double f, double *df) {
+static void d_mix(const double *a, double f, double *df)
+{
     (void)f;
     df[0] = 1.0 - a[2];
     df[1] = a[2];
@@ -236,7 +272,8 @@ static void d_mix(const double *a, double f, double *df) {
 }
 /* smoothstep(e0, e1, x) = t²(3 − 2t), t = clamp((x − e0)/(e1 − e0), 0, 1): df/dt = 6t(1 − t),
  * ∂t/∂x = 1/w, ∂t/∂e0 = (x − e1)/w², ∂t/∂e1 = −(x − e0)/w² with w = e1 − e0, inside (0, 1). */
-static void d_smoothstep(const double *a, double f, double *df) {
+static void d_smoothstep(const double *a, double f, double *df)
+{
     (void)f;
     double w = a[1] - a[0], t = (a[2] - a[0]) / w;
     double dfdt = (t > 0.0 && t < 1.0) ? 6.0 * t * (1.0 - t) : 0.0;
@@ -246,7 +283,8 @@ static void d_smoothstep(const double *a, double f, double *df) {
 }
 
 /* A component-wise built-in: d out_k = Σ_i ∂f/∂a_i · d a_i,k (a float argument broadcasts). */
-static sc_dual_value componentwise(const dual_call *c, partials_fn partials) {
+static sc_dual_value componentwise(const dual_call *c, partials_fn partials)
+{
     sc_dual_value out = constant(c->x);
     for (int k = 0; k < sc_type_size(c->x.type); k++) {
         double a[3] = {0, 0, 0}, df[3] = {0, 0, 0};
@@ -260,7 +298,8 @@ static sc_dual_value componentwise(const dual_call *c, partials_fn partials) {
     return out;
 }
 
-static double vdot(const double *a, const double *b, int n) {
+static double vdot(const double *a, const double *b, int n)
+{
     double s = 0.0;
     for (int k = 0; k < n; k++)
         s += a[k] * b[k];
@@ -268,7 +307,8 @@ static double vdot(const double *a, const double *b, int n) {
 }
 
 /* transpose: linear, d f(a) = f(da). */
-static sc_dual_value rule_linear(const dual_call *c) {
+static sc_dual_value rule_linear(const dual_call *c)
+{
     sc_dual_value out = {c->x, {{0}}};
     for (int j = 0; j < SC_DUAL_DIRS; j++)
         out.d[j] = with_tangent(c, 0, j);
@@ -276,7 +316,8 @@ static sc_dual_value rule_linear(const dual_call *c) {
 }
 
 /* dot, cross, outerProduct, matrixCompMult: bilinear, d f(a, b) = f(da, b) + f(a, db). */
-static sc_dual_value rule_bilinear(const dual_call *c) {
+static sc_dual_value rule_bilinear(const dual_call *c)
+{
     sc_dual_value out = {c->x, {{0}}};
     for (int j = 0; j < SC_DUAL_DIRS; j++) {
         sc_value left = with_tangent(c, 0, j), right = with_tangent(c, 1, j);
@@ -286,11 +327,13 @@ static sc_dual_value rule_bilinear(const dual_call *c) {
 }
 
 /* d‖a‖ = a·da/‖a‖ (0 at a = 0, where the length has no derivative). */
-static double length_tangent(const sc_value *a, const sc_value *da, double length) {
+static double length_tangent(const sc_value *a, const sc_value *da, double length)
+{
     return length > 0.0 ? vdot(a->v, da->v, sc_type_size(a->type)) / length : 0.0;
 }
 
-static sc_dual_value rule_length(const dual_call *c) {
+static sc_dual_value rule_length(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     for (int j = 0; j < SC_DUAL_DIRS; j++)
         out.d[j].v[0] = length_tangent(&c->args[0].x, &c->args[0].d[j], c->x.v[0]);
@@ -298,7 +341,8 @@ static sc_dual_value rule_length(const dual_call *c) {
 }
 
 /* distance(a, b) = ‖a − b‖. */
-static sc_dual_value rule_distance(const dual_call *c) {
+static sc_dual_value rule_distance(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     sc_type t = c->args[0].x.type;
     sc_value diff = binary('-', t, &c->args[0].x, &c->args[1].x);
@@ -310,7 +354,8 @@ static sc_dual_value rule_distance(const dual_call *c) {
 }
 
 /* n = a/‖a‖: dn = (da − n(n·da))/‖a‖ (0 at a = 0). */
-static sc_dual_value rule_normalize(const dual_call *c) {
+static sc_dual_value rule_normalize(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     const sc_value *a = &c->args[0].x;
     int size = sc_type_size(a->type);
@@ -325,7 +370,8 @@ static sc_dual_value rule_normalize(const dual_call *c) {
 }
 
 /* faceforward(N, I, Nref) = N if Nref·I < 0, else −N: the same sign on dN. */
-static sc_dual_value rule_faceforward(const dual_call *c) {
+static sc_dual_value rule_faceforward(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     int size = sc_type_size(c->x.type);
     double sign = vdot(c->args[2].x.v, c->args[1].x.v, size) < 0.0 ? 1.0 : -1.0;
@@ -335,7 +381,8 @@ static sc_dual_value rule_faceforward(const dual_call *c) {
 }
 
 /* reflect(I, N) = I − 2(N·I)N: d = dI − 2((dN·I + N·dI)N + (N·I)dN). */
-static sc_dual_value rule_reflect(const dual_call *c) {
+static sc_dual_value rule_reflect(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     const sc_dual_value *i = &c->args[0], *n = &c->args[1];
     int size = sc_type_size(i->x.type);
@@ -350,7 +397,8 @@ static sc_dual_value rule_reflect(const dual_call *c) {
 
 /* refract(I, N, η) = ηI − (ηc + √k)N with c = N·I, k = 1 − η²(1 − c²); 0 (and dk ignored)
  * where k < 0 (total internal reflection). dk = 2η²c·dc − 2η(1 − c²)dη. */
-static sc_dual_value rule_refract(const dual_call *c) {
+static sc_dual_value rule_refract(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     const sc_dual_value *i = &c->args[0], *n = &c->args[1], *eta = &c->args[2];
     int size = sc_type_size(i->x.type);
@@ -369,7 +417,8 @@ static sc_dual_value rule_refract(const dual_call *c) {
 }
 
 /* det is linear in each column: d det A = Σ_c det(A with column c replaced by dA's). */
-static sc_dual_value rule_determinant(const dual_call *c) {
+static sc_dual_value rule_determinant(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     const sc_dual_value *a = &c->args[0];
     int n = sc_type_matrix_n(a->x.type);
@@ -383,7 +432,8 @@ static sc_dual_value rule_determinant(const dual_call *c) {
 }
 
 /* d(A⁻¹) = −A⁻¹·dA·A⁻¹. */
-static sc_dual_value rule_inverse(const dual_call *c) {
+static sc_dual_value rule_inverse(const dual_call *c)
+{
     sc_dual_value out = constant(c->x);
     sc_type t = c->x.type;
     for (int j = 0; j < SC_DUAL_DIRS; j++) {
@@ -429,14 +479,16 @@ static const derivative derivatives[] = {
 };
 /* clang-format on */
 
-static const derivative *derivative_of(const char *name, int arity) {
+static const derivative *derivative_of(const char *name, int arity)
+{
     for (size_t i = 0; i < sizeof derivatives / sizeof derivatives[0]; i++)
         if (derivatives[i].arity == arity && strcmp(derivatives[i].name, name) == 0)
             return &derivatives[i];
     return NULL;
 }
 
-static sc_dual_value dual_builtin(int index, const sc_dual_value *args, int n_args) {
+static sc_dual_value dual_builtin(int index, const sc_dual_value *args, int n_args)
+{
     sc_value xs[3];
     for (int i = 0; i < n_args; i++)
         xs[i] = args[i].x;
@@ -449,14 +501,16 @@ static sc_dual_value dual_builtin(int index, const sc_dual_value *args, int n_ar
 
 /* ---- the walk ---- */
 
-static sc_dual_value negate(const sc_dual_value *a) {
+static sc_dual_value negate(const sc_dual_value *a)
+{
     sc_dual_value out = {scaled(&a->x, -1.0), {{0}}};
     for (int j = 0; j < SC_DUAL_DIRS; j++)
         out.d[j] = scaled(&a->d[j], -1.0);
     return out;
 }
 
-static sc_dual_value dual_select(const expr_node *n, const sc_dual_value *base) {
+static sc_dual_value dual_select(const expr_node *n, const sc_dual_value *base)
+{
     sc_dual_value out;
     out.x = sc_expr_select(n, &base->x);
     for (int j = 0; j < SC_DUAL_DIRS; j++)
@@ -464,32 +518,26 @@ static sc_dual_value dual_select(const expr_node *n, const sc_dual_value *base) 
     return out;
 }
 
-static sc_dual_value dual_node(dual_state *st, int index) {
+static sc_dual_value dual_node(dual_state *st, int index)
+{
     const expr_node *n = &st->e->nodes[index];
     sc_dual_value args[16];
     for (int i = 0; i < n->count; i++)
         args[i] = dual_node(st, st->e->kids[n->first + i]);
     switch (n->kind) {
-    case NODE_NUMBER:
-        return constant((sc_value){SC_FLOAT, {n->num}});
-    case NODE_INPUT:
-        return st->inputs[n->op];
-    case NODE_SLOT:
-        return st->slots[n->op];
-    case NODE_NEGATE:
-        return negate(&args[0]);
-    case NODE_BINARY:
-        return dual_binary(n->op, n->type, &args[0], &args[1]);
-    case NODE_CALL:
-        return dual_builtin(n->op, args, n->count);
-    case NODE_CONSTRUCT:
-        return dual_construct(n->type, args, n->count);
-    default:
-        return dual_select(n, &args[0]);
+    case NODE_NUMBER: return constant((sc_value){SC_FLOAT, {n->num}});
+    case NODE_INPUT: return st->inputs[n->op];
+    case NODE_SLOT: return st->slots[n->op];
+    case NODE_NEGATE: return negate(&args[0]);
+    case NODE_BINARY: return dual_binary(n->op, n->type, &args[0], &args[1]);
+    case NODE_CALL: return dual_builtin(n->op, args, n->count);
+    case NODE_CONSTRUCT: return dual_construct(n->type, args, n->count);
+    default: return dual_select(n, &args[0]);
     }
 }
 
-sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs) {
+sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs)
+{
     dual_state st = {.e = e, .inputs = inputs};
     for (int i = 0; i < e->n_stmts; i++)
         st.slots[e->stmts[i].slot] = dual_node(&st, e->stmts[i].root);

@@ -14,28 +14,27 @@ typedef struct {
 
 static sc_value eval_node(eval_state *st, int index);
 
-static sc_value rounded(sc_prec p, sc_value v) {
+static sc_value rounded(sc_prec p, sc_value v)
+{
     for (int k = 0; k < sc_type_size(v.type); k++)
         v.v[k] = sc_round(p, v.v[k]);
     return v;
 }
 
-static double scalar_op(sc_prec p, int op, double a, double b) {
+static double scalar_op(sc_prec p, int op, double a, double b)
+{
     switch (op) {
-    case '+':
-        return sc_p_add(p, a, b);
-    case '-':
-        return sc_p_sub(p, a, b);
-    case '*':
-        return sc_p_mul(p, a, b);
-    default:
-        return sc_p_div(p, a, b);
+    case '+': return sc_p_add(p, a, b);
+    case '-': return sc_p_sub(p, a, b);
+    case '*': return sc_p_mul(p, a, b);
+    default: return sc_p_div(p, a, b);
     }
 }
 
 /* GLSL ES §5.9: matrix products are linear algebra; everything else is component-wise with a
  * scalar operand broadcast. */
-sc_value sc_expr_binary(sc_prec p, int op, sc_type type, const sc_value *a, const sc_value *b) {
+sc_value sc_expr_binary(sc_prec p, int op, sc_type type, const sc_value *a, const sc_value *b)
+{
     sc_value out = {type, {0}};
     int an = sc_type_matrix_n(a->type), bn = sc_type_matrix_n(b->type);
     if (op == '*' && an && bn)
@@ -51,12 +50,14 @@ sc_value sc_expr_binary(sc_prec p, int op, sc_type type, const sc_value *a, cons
     return out;
 }
 
-static sc_value eval_call(eval_state *st, const expr_node *n, const sc_value *args) {
+static sc_value eval_call(eval_state *st, const expr_node *n, const sc_value *args)
+{
     call_context ctx = {st->p, n->column, sc_builtin_name(n->op), st->on_domain, st->user};
     return sc_builtin_eval(n->op, &ctx, args, n->count);
 }
 
-sc_value sc_expr_select(const expr_node *n, const sc_value *base) {
+sc_value sc_expr_select(const expr_node *n, const sc_value *base)
+{
     sc_value out = {n->type, {0}};
     if (n->kind == NODE_SWIZZLE) {
         for (int i = 0; i < n->swz_len; i++)
@@ -69,33 +70,28 @@ sc_value sc_expr_select(const expr_node *n, const sc_value *base) {
     return out;
 }
 
-static sc_value eval_node(eval_state *st, int index) {
+static sc_value eval_node(eval_state *st, int index)
+{
     const expr_node *n = &st->e->nodes[index];
     sc_value args[16];
     for (int i = 0; i < n->count; i++)
         args[i] = eval_node(st, st->e->kids[n->first + i]);
     switch (n->kind) {
-    case NODE_NUMBER:
-        return (sc_value){SC_FLOAT, {sc_round(st->p, n->num)}};
-    case NODE_INPUT:
-        return rounded(st->p, st->inputs[n->op]);
-    case NODE_SLOT:
-        return st->slots[n->op];
+    case NODE_NUMBER: return (sc_value){SC_FLOAT, {sc_round(st->p, n->num)}};
+    case NODE_INPUT: return rounded(st->p, st->inputs[n->op]);
+    case NODE_SLOT: return st->slots[n->op];
     case NODE_NEGATE:
         return sc_expr_binary(st->p, '*', n->type, &args[0], &(sc_value){SC_FLOAT, {-1.0}});
-    case NODE_BINARY:
-        return sc_expr_binary(st->p, n->op, n->type, &args[0], &args[1]);
-    case NODE_CALL:
-        return eval_call(st, n, args);
-    case NODE_CONSTRUCT:
-        return sc_construct(n->type, args, n->count);
-    default:
-        return sc_expr_select(n, &args[0]);
+    case NODE_BINARY: return sc_expr_binary(st->p, n->op, n->type, &args[0], &args[1]);
+    case NODE_CALL: return eval_call(st, n, args);
+    case NODE_CONSTRUCT: return sc_construct(n->type, args, n->count);
+    default: return sc_expr_select(n, &args[0]);
     }
 }
 
 sc_value sc_expr_eval(const sc_expr *e, sc_prec p, const sc_value *inputs,
-                      sc_expr_domain_fn on_domain, void *user) {
+                      sc_expr_domain_fn on_domain, void *user)
+{
     eval_state st = {.e = e, .p = p, .inputs = inputs, .on_domain = on_domain, .user = user};
     for (int i = 0; i < e->n_stmts; i++)
         st.slots[e->stmts[i].slot] = eval_node(&st, e->stmts[i].root);

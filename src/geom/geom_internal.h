@@ -24,7 +24,8 @@ struct sc_surface {
 /* Sets closed_u/closed_v of a user surface by sampling (surface.h). */
 void sc_surface_detect_closed(sc_surface *s);
 
-static inline sc_dvec3 sc_dvec3_from(const double *a) {
+static inline sc_dvec3 sc_dvec3_from(const double *a)
+{
     return (sc_dvec3){a[0], a[1], a[2]};
 }
 

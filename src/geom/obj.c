@@ -17,11 +17,13 @@ typedef struct {
     int n, cap;
 } array;
 
-static void *array_push(array *a, size_t size) {
+static void *array_push(array *a, size_t size)
+{
     if (a->n == a->cap) {
         int cap = a->cap ? 2 * a->cap : 64;
         void *data = a->n < MAX_ELEMENTS ? realloc(a->data, (size_t)cap * size) : NULL;
-        if (data == NULL) return NULL;
+        if (data == NULL)
+            return NULL;
         a->data = data;
         a->cap = cap;
     }
@@ -46,18 +48,21 @@ typedef struct {
     size_t errsize;
 } obj_reader;
 
-static int fail(obj_reader *r, const char *what, const char *token, int len) {
+static int fail(obj_reader *r, const char *what, const char *token, int len)
+{
     snprintf(r->err, r->errsize, "%s:%d: %s '%.*s'", r->path, r->line, what, len, token);
     return -1;
 }
 
-static int out_of_memory(obj_reader *r) {
+static int out_of_memory(obj_reader *r)
+{
     snprintf(r->err, r->errsize, "%s:%d: out of memory or too many elements", r->path, r->line);
     return -1;
 }
 
 /* The next whitespace-separated token at *p (its length in *len), or NULL at the end. */
-static const char *next_token(const char **p, int *len) {
+static const char *next_token(const char **p, int *len)
+{
     const char *s = *p;
     while (isspace((unsigned char)*s))
         s++;
@@ -70,14 +75,17 @@ static const char *next_token(const char **p, int *len) {
 }
 
 /* `v x y z [w]` or `vn x y z`: three finite numbers (w ignored). */
-static int read_vector(obj_reader *r, const char *p, array *into) {
+static int read_vector(obj_reader *r, const char *p, array *into)
+{
     float *out = array_push(into, 3 * sizeof(float));
-    if (out == NULL) return out_of_memory(r);
+    if (out == NULL)
+        return out_of_memory(r);
     for (int k = 0; k < 4; k++) {
         int len;
         const char *t = next_token(&p, &len);
         char *end;
-        if (t == NULL && k == 3) return 0;
+        if (t == NULL && k == 3)
+            return 0;
         if (t == NULL) {
             snprintf(r->err, r->errsize, "%s:%d: expected 3 coordinates, got %d", r->path, r->line,
                      k);
@@ -86,37 +94,46 @@ static int read_vector(obj_reader *r, const char *p, array *into) {
         double x = strtod(t, &end);
         if (end != t + len || !isfinite(x) || fabs(x) > 3.4e38)
             return fail(r, "not a finite number:", t, len);
-        if (k < 3) out[k] = (float)x;
+        if (k < 3)
+            out[k] = (float)x;
     }
     return 0;
 }
 
 /* A 1-based (or negative: relative to the end) index among `count` elements, into *out. */
-static int parse_index(const char *s, const char *end, int count, int *out) {
+static int parse_index(const char *s, const char *end, int count, int *out)
+{
     char *stop;
     long i = strtol(s, &stop, 10);
-    if (stop != end || s == end) return -1;
-    if (i < 0) i += count + 1;
-    if (i < 1 || i > count) return -1;
+    if (stop != end || s == end)
+        return -1;
+    if (i < 0)
+        i += count + 1;
+    if (i < 1 || i > count)
+        return -1;
     *out = (int)(i - 1);
     return 0;
 }
 
 /* The mesh vertex of (position, normal), made on first use. */
-static int vertex_of(obj_reader *r, int position, int normal) {
+static int vertex_of(obj_reader *r, int position, int normal)
+{
     int *first = (int *)r->first.data, k;
     corner_vertex *cv = (corner_vertex *)r->verts.data;
     for (k = first[position]; k >= 0; k = cv[k].next)
-        if (cv[k].normal == normal) return k;
+        if (cv[k].normal == normal)
+            return k;
     corner_vertex *add = array_push(&r->verts, sizeof *add);
-    if (add == NULL) return -1;
+    if (add == NULL)
+        return -1;
     *add = (corner_vertex){position, normal, first[position]};
     first[position] = r->verts.n - 1;
     return r->verts.n - 1;
 }
 
 /* One face corner "i", "i/t", "i//n" or "i/t/n" -> a mesh vertex. */
-static int read_corner(obj_reader *r, const char *t, int len, int *vertex) {
+static int read_corner(obj_reader *r, const char *t, int len, int *vertex)
+{
     const char *end = t + len, *slash = memchr(t, '/', (size_t)len);
     const char *slash2 = slash ? memchr(slash + 1, '/', (size_t)(end - slash - 1)) : NULL;
     int position, normal = -1;
@@ -133,43 +150,55 @@ static int read_corner(obj_reader *r, const char *t, int len, int *vertex) {
 }
 
 /* `f c1 c2 c3 ...`: a polygon of at least 3 corners, split into a fan of triangles. */
-static int read_face(obj_reader *r, const char *p) {
+static int read_face(obj_reader *r, const char *p)
+{
     int corners = 0, first = 0, previous = 0, len;
     for (const char *t; (t = next_token(&p, &len)) != NULL; corners++) {
         int vertex;
-        if (read_corner(r, t, len, &vertex) < 0) return -1;
+        if (read_corner(r, t, len, &vertex) < 0)
+            return -1;
         if (corners >= 2) {
             int *tri = array_push(&r->tri, 3 * sizeof(int));
-            if (tri == NULL) return out_of_memory(r);
+            if (tri == NULL)
+                return out_of_memory(r);
             tri[0] = first;
             tri[1] = previous;
             tri[2] = vertex;
         }
-        if (corners == 0) first = vertex;
+        if (corners == 0)
+            first = vertex;
         previous = vertex;
     }
-    if (corners >= 3) return 0;
+    if (corners >= 3)
+        return 0;
     snprintf(r->err, r->errsize, "%s:%d: a face needs at least 3 corners, got %d", r->path, r->line,
              corners);
     return -1;
 }
 
-static int read_position(obj_reader *r, const char *p) {
+static int read_position(obj_reader *r, const char *p)
+{
     int *first = array_push(&r->first, sizeof(int));
-    if (first == NULL) return out_of_memory(r);
+    if (first == NULL)
+        return out_of_memory(r);
     *first = -1;
     return read_vector(r, p, &r->v);
 }
 
-static int read_line(obj_reader *r, const char *line) {
+static int read_line(obj_reader *r, const char *line)
+{
     static const char *const ignored[] = {"vt", "vp", "o", "g", "s", "usemtl", "mtllib", "l", "p"};
     const char *p = line;
     int len;
     const char *key = next_token(&p, &len);
-    if (key == NULL || key[0] == '#') return 0;
-    if (len == 1 && key[0] == 'v') return read_position(r, p);
-    if (len == 2 && strncmp(key, "vn", 2) == 0) return read_vector(r, p, &r->vn);
-    if (len == 1 && key[0] == 'f') return read_face(r, p);
+    if (key == NULL || key[0] == '#')
+        return 0;
+    if (len == 1 && key[0] == 'v')
+        return read_position(r, p);
+    if (len == 2 && strncmp(key, "vn", 2) == 0)
+        return read_vector(r, p, &r->vn);
+    if (len == 1 && key[0] == 'f')
+        return read_face(r, p);
     for (size_t i = 0; i < sizeof ignored / sizeof ignored[0]; i++)
         if (strlen(ignored[i]) == (size_t)len && strncmp(key, ignored[i], (size_t)len) == 0)
             return 0;
@@ -177,7 +206,8 @@ static int read_line(obj_reader *r, const char *line) {
 }
 
 /* The reader's vertices and triangles as a mesh (normals only if every corner had one). */
-static int build_mesh(obj_reader *r, sc_mesh *out) {
+static int build_mesh(obj_reader *r, sc_mesh *out)
+{
     const corner_vertex *cv = (const corner_vertex *)r->verts.data;
     const float *v = (const float *)r->v.data, *vn = (const float *)r->vn.data;
     int n = r->verts.n, normals = r->with_normal > 0 && r->without_normal == 0;
@@ -190,7 +220,8 @@ static int build_mesh(obj_reader *r, sc_mesh *out) {
     }
     for (int k = 0; k < n; k++) {
         memcpy(&out->pos[3 * k], &v[3 * cv[k].position], 3 * sizeof(float));
-        if (normals) memcpy(&out->normal[3 * k], &vn[3 * cv[k].normal], 3 * sizeof(float));
+        if (normals)
+            memcpy(&out->normal[3 * k], &vn[3 * cv[k].normal], 3 * sizeof(float));
     }
     out->n_vertices = n;
     out->n_triangles = r->tri.n;
@@ -199,7 +230,8 @@ static int build_mesh(obj_reader *r, sc_mesh *out) {
     return 0;
 }
 
-static int read_stream(obj_reader *r, FILE *f, sc_mesh *out) {
+static int read_stream(obj_reader *r, FILE *f, sc_mesh *out)
+{
     char *line = NULL;
     size_t cap = 0;
     int status = 0;
@@ -219,7 +251,8 @@ static int read_stream(obj_reader *r, FILE *f, sc_mesh *out) {
     return status == 0 ? build_mesh(r, out) : -1;
 }
 
-int sc_obj_read(const char *path, sc_mesh *out, char *err, size_t errsize) {
+int sc_obj_read(const char *path, sc_mesh *out, char *err, size_t errsize)
+{
     obj_reader r = {.path = path, .err = err, .errsize = errsize};
     FILE *f = fopen(path, "r");
     if (f == NULL) {
@@ -238,7 +271,8 @@ int sc_obj_read(const char *path, sc_mesh *out, char *err, size_t errsize) {
 
 /* ---- writing ---- */
 
-static void write_floats(FILE *f, const char *key, const float *x, int n) {
+static void write_floats(FILE *f, const char *key, const float *x, int n)
+{
     fputs(key, f);
     for (int k = 0; k < n; k++)
         fprintf(f, " %.9g", (double)x[k]);
@@ -246,13 +280,17 @@ static void write_floats(FILE *f, const char *key, const float *x, int n) {
 }
 
 /* One corner "i", "i/i", "i//i" or "i/i/i" (1-based; vt and vn share the vertex's index). */
-static void write_corner(FILE *f, const sc_mesh *m, int k) {
+static void write_corner(FILE *f, const sc_mesh *m, int k)
+{
     fprintf(f, " %d", k + 1);
-    if (m->uv) fprintf(f, "/%d", k + 1);
-    if (m->normal) fprintf(f, m->uv ? "/%d" : "//%d", k + 1);
+    if (m->uv)
+        fprintf(f, "/%d", k + 1);
+    if (m->normal)
+        fprintf(f, m->uv ? "/%d" : "//%d", k + 1);
 }
 
-static void write_mesh(FILE *f, const sc_mesh *m) {
+static void write_mesh(FILE *f, const sc_mesh *m)
+{
     fprintf(f, "# shadecalc mesh: %d vertices, %d triangles\n", m->n_vertices, m->n_triangles);
     for (int k = 0; k < m->n_vertices; k++)
         write_floats(f, "v", &m->pos[3 * k], 3);
@@ -268,9 +306,11 @@ static void write_mesh(FILE *f, const sc_mesh *m) {
     }
 }
 
-int sc_obj_write(const char *path, const sc_mesh *m, char *err, size_t errsize) {
+int sc_obj_write(const char *path, const sc_mesh *m, char *err, size_t errsize)
+{
     sc_atomic_file *f = sc_atomic_open(path, err, errsize);
-    if (f == NULL) return -1;
+    if (f == NULL)
+        return -1;
     write_mesh(sc_atomic_stream(f), m);
     if (ferror(sc_atomic_stream(f))) {
         snprintf(err, errsize, "%s: write error", path);

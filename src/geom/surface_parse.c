@@ -25,13 +25,15 @@ static const builtin_surface builtins[] = {
 };
 enum { N_BUILTINS = (int)(sizeof builtins / sizeof builtins[0]) };
 
-static const char *skip_space(const char *p) {
+static const char *skip_space(const char *p)
+{
     while (isspace((unsigned char)*p))
         p++;
     return p;
 }
 
-static size_t word_length(const char *p) {
+static size_t word_length(const char *p)
+{
     size_t n = 0;
     while (p[n] && !isspace((unsigned char)p[n]))
         n++;
@@ -39,9 +41,11 @@ static size_t word_length(const char *p) {
 }
 
 /* The whole of src[0 .. n) as a finite number > 0. */
-static int parse_positive(const char *src, size_t n, double *out) {
+static int parse_positive(const char *src, size_t n, double *out)
+{
     char number[64], *end;
-    if (n == 0 || n >= sizeof number) return -1;
+    if (n == 0 || n >= sizeof number)
+        return -1;
     memcpy(number, src, n);
     number[n] = '\0';
     *out = strtod(number, &end);
@@ -49,15 +53,18 @@ static int parse_positive(const char *src, size_t n, double *out) {
 }
 
 /* The index of b's parameter named word[0 .. n), or -1. */
-static int parameter_index(const builtin_surface *b, const char *word, size_t n) {
+static int parameter_index(const builtin_surface *b, const char *word, size_t n)
+{
     for (int k = 0; k < 2 && b->keys[k]; k++)
-        if (strlen(b->keys[k]) == n && strncmp(word, b->keys[k], n) == 0) return k;
+        if (strlen(b->keys[k]) == n && strncmp(word, b->keys[k], n) == 0)
+            return k;
     return -1;
 }
 
 /* The parameter `word` (len bytes, "KEY=NUMBER") of built-in b into values[]. */
 static int parse_parameter(const builtin_surface *b, const char *word, size_t len, double *values,
-                           int *seen, char *err, size_t errsize) {
+                           int *seen, char *err, size_t errsize)
+{
     const char *eq = memchr(word, '=', len);
     int k = eq ? parameter_index(b, word, (size_t)(eq - word)) : -1;
     if (k < 0) {
@@ -80,12 +87,14 @@ static int parse_parameter(const builtin_surface *b, const char *word, size_t le
 }
 
 static sc_surface *parse_builtin(const builtin_surface *b, const char *rest, char *err,
-                                 size_t errsize) {
+                                 size_t errsize)
+{
     double values[2] = {b->defaults[0], b->defaults[1]};
     int seen[2] = {0, 0};
     for (const char *p = skip_space(rest); *p; p = skip_space(p)) {
         size_t len = word_length(p);
-        if (parse_parameter(b, p, len, values, seen, err, errsize) < 0) return NULL;
+        if (parse_parameter(b, p, len, values, seen, err, errsize) < 0)
+            return NULL;
         p += len;
     }
     if (b->kind == SURFACE_TORUS && !(values[1] < values[0])) {
@@ -105,13 +114,15 @@ static sc_surface *parse_builtin(const builtin_surface *b, const char *rest, cha
 /* ---- user x=EXPR y=EXPR z=EXPR ---- */
 
 /* Whether p (inside spec) starts a key "x=", "y=" or "z=" at the start of a word. */
-static int is_key(const char *spec, const char *p) {
+static int is_key(const char *spec, const char *p)
+{
     return (p == spec || isspace((unsigned char)p[-1])) && (*p == 'x' || *p == 'y' || *p == 'z') &&
            p[1] == '=';
 }
 
 static int compile_coordinate(sc_surface *s, int k, const char *src, size_t len, char *err,
-                              size_t errsize) {
+                              size_t errsize)
+{
     static const sc_expr_input uv[2] = {{"u", SC_FLOAT}, {"v", SC_FLOAT}};
     char *text = malloc(len + 1);
     sc_expr_error e = {0, ""};
@@ -134,7 +145,8 @@ static int compile_coordinate(sc_surface *s, int k, const char *src, size_t len,
 
 /* Each key's expression runs from after "K=" to the next key (trailing space dropped). */
 static int parse_user_keys(sc_surface *s, const char *spec, const char *p, char *err,
-                           size_t errsize) {
+                           size_t errsize)
+{
     p = skip_space(p);
     while (*p) {
         if (!is_key(spec, p)) {
@@ -153,7 +165,8 @@ static int parse_user_keys(sc_surface *s, const char *spec, const char *p, char 
             snprintf(err, errsize, "surface user: '%c=' given twice", "xyz"[k]);
             return -1;
         }
-        if (compile_coordinate(s, k, start, (size_t)(end - start), err, errsize) < 0) return -1;
+        if (compile_coordinate(s, k, start, (size_t)(end - start), err, errsize) < 0)
+            return -1;
     }
     for (int k = 0; k < 3; k++)
         if (s->xyz[k] == NULL) {
@@ -163,7 +176,8 @@ static int parse_user_keys(sc_surface *s, const char *spec, const char *p, char 
     return 0;
 }
 
-static sc_surface *parse_user(const char *spec, const char *rest, char *err, size_t errsize) {
+static sc_surface *parse_user(const char *spec, const char *rest, char *err, size_t errsize)
+{
     sc_surface *s = calloc(1, sizeof *s);
     if (s == NULL) {
         snprintf(err, errsize, "surface: out of memory");
@@ -178,13 +192,15 @@ static sc_surface *parse_user(const char *spec, const char *rest, char *err, siz
     return s;
 }
 
-sc_surface *sc_surface_parse(const char *spec, char *err, size_t errsize) {
+sc_surface *sc_surface_parse(const char *spec, char *err, size_t errsize)
+{
     const char *p = skip_space(spec);
     size_t len = word_length(p);
     for (int i = 0; i < N_BUILTINS; i++)
         if (strlen(builtins[i].name) == len && strncmp(p, builtins[i].name, len) == 0)
             return parse_builtin(&builtins[i], p + len, err, errsize);
-    if (len == 4 && strncmp(p, "user", 4) == 0) return parse_user(spec, p + len, err, errsize);
+    if (len == 4 && strncmp(p, "user", 4) == 0)
+        return parse_user(spec, p + len, err, errsize);
     snprintf(err, errsize,
              "surface '%.*s': unknown (expected sphere, torus, plane, cylinder or user)", (int)len,
              p);

@@ -10,7 +10,8 @@
 
 enum { MAX_TRIANGLES = 1 << 26, SPEED_SAMPLES = 17 };
 
-void sc_mesh_free(sc_mesh *m) {
+void sc_mesh_free(sc_mesh *m)
+{
     free(m->pos);
     free(m->normal);
     free(m->uv);
@@ -19,7 +20,8 @@ void sc_mesh_free(sc_mesh *m) {
 }
 
 /* max ‖∂S/∂u‖ / max ‖∂S/∂v‖ over a 17 × 17 sample, within [1/64, 64] (1 if undefined). */
-static double speed_ratio(const sc_surface *s) {
+static double speed_ratio(const sc_surface *s)
+{
     double su = 0.0, sv = 0.0;
     for (int j = 0; j < SPEED_SAMPLES; j++)
         for (int i = 0; i < SPEED_SAMPLES; i++) {
@@ -33,12 +35,15 @@ static double speed_ratio(const sc_surface *s) {
 }
 
 /* nu × nv quads, 2·nu·nv ≈ triangles, nu/nv ≈ the speed ratio; at least 3 around a seam. */
-static void grid_size(const sc_surface *s, int triangles, int *nu, int *nv) {
+static void grid_size(const sc_surface *s, int triangles, int *nu, int *nv)
+{
     double ratio = speed_ratio(s);
     *nv = (int)fmax(1.0, round(sqrt(triangles / (2.0 * ratio))));
     *nu = (int)fmax(1.0, round(triangles / (2.0 * *nv)));
-    if (sc_surface_closed_u(s) && *nu < 3) *nu = 3;
-    if (sc_surface_closed_v(s) && *nv < 3) *nv = 3;
+    if (sc_surface_closed_u(s) && *nu < 3)
+        *nu = 3;
+    if (sc_surface_closed_v(s) && *nv < 3)
+        *nv = 3;
 }
 
 typedef struct {
@@ -46,19 +51,23 @@ typedef struct {
     sc_mesh *m;
 } grid;
 
-static int vertex_index(const grid *g, int i, int j) {
+static int vertex_index(const grid *g, int i, int j)
+{
     return j * (g->nu + 1) + i;
 }
 
-static void copy_vertex(sc_mesh *m, int to, int from, int with_normal) {
+static void copy_vertex(sc_mesh *m, int to, int from, int with_normal)
+{
     memcpy(&m->pos[3 * to], &m->pos[3 * from], 3 * sizeof(float));
-    if (with_normal) memcpy(&m->normal[3 * to], &m->normal[3 * from], 3 * sizeof(float));
+    if (with_normal)
+        memcpy(&m->normal[3 * to], &m->normal[3 * from], 3 * sizeof(float));
 }
 
 /* The exact point, normal and (u,v) at every grid vertex; the largest coordinate in *size.
  * -1 with err at the first point that is not finite. */
 static int fill_vertices(const sc_surface *s, const grid *g, double *size, char *err,
-                         size_t errsize) {
+                         size_t errsize)
+{
     *size = 0.0;
     for (int j = 0; j <= g->nv; j++)
         for (int i = 0; i <= g->nu; i++) {
@@ -82,7 +91,8 @@ static int fill_vertices(const sc_surface *s, const grid *g, double *size, char 
 }
 
 /* Closed surfaces: the last column (row) repeats the first's position and normal bitwise. */
-static void join_seams(const sc_surface *s, const grid *g) {
+static void join_seams(const sc_surface *s, const grid *g)
+{
     for (int j = 0; j <= g->nv && sc_surface_closed_u(s); j++)
         copy_vertex(g->m, vertex_index(g, g->nu, j), vertex_index(g, 0, j), 1);
     for (int i = 0; i <= g->nu && sc_surface_closed_v(s); i++)
@@ -91,7 +101,8 @@ static void join_seams(const sc_surface *s, const grid *g) {
 
 /* Whether the n vertices first, first + step, ... lie within tol of the first (a pole); if so
  * they get its position exactly. */
-static int collapse_line(sc_mesh *m, int first, int step, int n, double tol) {
+static int collapse_line(sc_mesh *m, int first, int step, int n, double tol)
+{
     for (int k = 1; k < n; k++)
         for (int c = 0; c < 3; c++)
             if (!(fabs((double)m->pos[3 * (first + k * step) + c] - m->pos[3 * first + c]) <= tol))
@@ -101,7 +112,8 @@ static int collapse_line(sc_mesh *m, int first, int step, int n, double tol) {
     return 1;
 }
 
-static void add_triangle(sc_mesh *m, int a, int b, int c) {
+static void add_triangle(sc_mesh *m, int a, int b, int c)
+{
     int *t = &m->tri[3 * m->n_triangles++];
     t[0] = a;
     t[1] = b;
@@ -111,19 +123,23 @@ static void add_triangle(sc_mesh *m, int a, int b, int c) {
 /* Two triangles per quad, CCW seen from outside (∂S/∂u × ∂S/∂v outward): (a, b, c) with
  * a = (i, j), b = (i+1, j), c = (i+1, j+1), and (a, c, d) with d = (i, j+1); a triangle with two
  * corners on a collapsed row or column has zero area and is left out. */
-static void build_triangles(const grid *g, const char *row_gone, const char *col_gone) {
+static void build_triangles(const grid *g, const char *row_gone, const char *col_gone)
+{
     sc_mesh *m = g->m;
     m->n_triangles = 0;
     for (int j = 0; j < g->nv; j++)
         for (int i = 0; i < g->nu; i++) {
             int a = vertex_index(g, i, j), b = vertex_index(g, i + 1, j);
             int c = vertex_index(g, i + 1, j + 1), d = vertex_index(g, i, j + 1);
-            if (!row_gone[j] && !col_gone[i + 1]) add_triangle(m, a, b, c);
-            if (!row_gone[j + 1] && !col_gone[i]) add_triangle(m, a, c, d);
+            if (!row_gone[j] && !col_gone[i + 1])
+                add_triangle(m, a, b, c);
+            if (!row_gone[j + 1] && !col_gone[i])
+                add_triangle(m, a, c, d);
         }
 }
 
-static int connect(const grid *g, double size) {
+static int connect(const grid *g, double size)
+{
     double tol = 0x1p-40 * size;
     char *row_gone = calloc((size_t)g->nv + 1, 1), *col_gone = calloc((size_t)g->nu + 1, 1);
     if (row_gone == NULL || col_gone == NULL) {
@@ -141,20 +157,23 @@ static int connect(const grid *g, double size) {
     return 0;
 }
 
-static int allocate(sc_mesh *m, int n_vertices, int n_triangles) {
+static int allocate(sc_mesh *m, int n_vertices, int n_triangles)
+{
     memset(m, 0, sizeof *m);
     m->n_vertices = n_vertices;
     m->pos = malloc(sizeof(float) * 3 * (size_t)n_vertices);
     m->normal = malloc(sizeof(float) * 3 * (size_t)n_vertices);
     m->uv = malloc(sizeof(float) * 2 * (size_t)n_vertices);
     m->tri = malloc(sizeof(int) * 3 * (size_t)n_triangles);
-    if (m->pos && m->normal && m->uv && m->tri) return 0;
+    if (m->pos && m->normal && m->uv && m->tri)
+        return 0;
     sc_mesh_free(m);
     return -1;
 }
 
 int sc_surface_tessellate(const sc_surface *s, int triangles, sc_mesh *out, char *err,
-                          size_t errsize) {
+                          size_t errsize)
+{
     grid g = {0, 0, out};
     if (triangles < 2 || triangles > MAX_TRIANGLES) {
         snprintf(err, errsize, "tessellate: %d triangles: expected 2 .. %d", triangles,
@@ -178,6 +197,7 @@ int sc_surface_tessellate(const sc_surface *s, int triangles, sc_mesh *out, char
             status = -1;
         }
     }
-    if (status < 0) sc_mesh_free(out);
+    if (status < 0)
+        sc_mesh_free(out);
     return status;
 }
