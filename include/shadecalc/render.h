@@ -9,6 +9,7 @@
  *   sc_shading_parse, sc_shading_name
  *   sc_framebuffer                 RGBA, view depth and shading normal per pixel
  *   sc_framebuffer_init, _free
+ *   sc_render_image                a framebuffer as an image (R G B A [Z] [N.X N.Y N.Z])
  *   sc_render                      rasterize and shade a mesh, tiles spread over threads
  *   sc_render_compare              RMSE and maximum error of an image against a reference
  *
@@ -31,6 +32,7 @@
 
 #include <stddef.h>
 
+#include "shadecalc/image.h"
 #include "shadecalc/mesh.h"
 #include "shadecalc/shade.h"
 #include "shadecalc/surface.h"
@@ -69,6 +71,10 @@ typedef struct {
 /* 0, or -1 (size outside 1..SC_RENDER_MAX_SIDE or above SC_RENDER_MAX_PIXELS, no memory). */
 int sc_framebuffer_init(sc_framebuffer *fb, int width, int height);
 void sc_framebuffer_free(sc_framebuffer *fb);
+
+/* The framebuffer as an image with channels R, G, B, A, then Z (the depth) if depth, then N.X,
+ * N.Y, N.Z (the normal) if normals. 0, or -1 (out of memory). */
+int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *out);
 
 /* Called after each tile (from the worker threads, one at a time). */
 typedef void sc_render_progress_fn(void *ctx, int tiles_done, int tiles_total);

@@ -70,3 +70,28 @@ void sc_render_compare(const sc_framebuffer *img, const sc_framebuffer *ref, flo
     out->max_error = worst;
     out->pixels = pixels;
 }
+
+int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *out)
+{
+    const char *names[8] = {"R", "G", "B", "A"};
+    int n = 4;
+    if (depth)
+        names[n++] = "Z";
+    if (normals) {
+        names[n++] = "N.X";
+        names[n++] = "N.Y";
+        names[n++] = "N.Z";
+    }
+    if (sc_image_init(out, fb->width, fb->height, n, names) < 0)
+        return -1;
+    size_t pixels = (size_t)fb->width * (size_t)fb->height;
+    for (size_t i = 0; i < pixels; i++) {
+        float *px = out->data + i * (size_t)n;
+        memcpy(px, fb->rgba + 4 * i, 4 * sizeof *px);
+        if (depth)
+            px[4] = fb->depth[i];
+        if (normals)
+            memcpy(px + n - 3, fb->normal + 3 * i, 3 * sizeof *px);
+    }
+    return 0;
+}
