@@ -93,7 +93,7 @@ static int read_vector(obj_reader *r, const char *p, array *into)
         }
         double x = strtod(t, &end);
         if (end != t + len || !isfinite(x) || fabs(x) > 3.4e38)
-            return fail(r, "not a finite number:", t, len);
+            return fail(r, "not a finite float:", t, len);
         if (k < 3)
             out[k] = (float)x;
     }
