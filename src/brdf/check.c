@@ -90,7 +90,7 @@ enum { MAX_BREAKS = 2 * FIRST_PANEL_EXP + 8, MAX_NODES = MAX_BREAKS * MAX_ORDER 
 static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], double theta_i,
                       int order, double out[3])
 {
-    static double th[MAX_NODES], tw[MAX_NODES], ph[MAX_NODES], pw[MAX_NODES];
+    double th[MAX_NODES], tw[MAX_NODES], ph[MAX_NODES], pw[MAX_NODES]; /* 32 KB: thread-safe */
     double bp[MAX_BREAKS];
     const double phi_kinks[2] = {pi / 2.0, 1.5 * pi};
     int nt = composite_nodes(bp, breakpoints(0.0, pi / 2.0, theta_i, NULL, 0, bp), order, th, tw);
