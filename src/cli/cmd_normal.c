@@ -7,6 +7,7 @@
 
 #include "cli/cli.h"
 #include "shadecalc/mesh.h"
+#include "shadecalc/precision.h"
 #include "shadecalc/surface.h"
 #include "shadecalc/transform.h"
 #include "shadecalc/vec.h"
@@ -55,10 +56,18 @@ static void print_vec(const char *label, const double *v)
     printf("  %-14s (%.10g, %.10g, %.10g)\n", label, v[0] + 0.0, v[1] + 0.0, v[2] + 0.0);
 }
 
+/* csv: the shortest decimal that reads back to the same double. */
+static void csv_value(double x, const char *end)
+{
+    char buf[64];
+    sc_format_shortest(buf, sizeof buf, x + 0.0, SC_DOUBLE);
+    printf("%s%s", buf, end);
+}
+
 static void csv_values(const double *v, int n, const char *end)
 {
     for (int k = 0; k < n; k++)
-        printf("%.17g%s", v[k] + 0.0, k + 1 < n ? "," : end);
+        csv_value(v[k], k + 1 < n ? "," : end);
 }
 
 static sc_dvec3 dvec3(const double *a)
@@ -142,7 +151,8 @@ static int run_triangle(const normal_options *o)
     if (o->format == FMT_CSV) {
         printf("nx,ny,nz,area,degenerate\n");
         csv_values(n, 3, ",");
-        printf("%.17g,%d\n", degenerate ? 0.0 : area, degenerate);
+        csv_value(degenerate ? 0.0 : area, ",");
+        printf("%d\n", degenerate);
         return SC_EXIT_OK;
     }
     printf("  %-14s %.10g\n", "area", degenerate ? 0.0 : area);
