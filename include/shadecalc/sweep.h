@@ -1,0 +1,133 @@
+/*
+ * shadecalc/sweep.h — parameter sweeps (`shadecalc sweep`, issue 5): a grid of variables,
+ * `$name` substitution into spec strings, rows formatted as CSV/TSV/JSON lines, and an ordered
+ * multi-threaded runner that streams any number of rows in constant memory.
+ *
+ *   sc_sweep_var              one variable: a linear or geometric range, or a list of values
+ *   sc_sweep_var_parse        "NAME=START:STOP:COUNT" (inclusive) | "NAME=V1,V2,..."
+ *   sc_sweep_var_set_log      geometric spacing for a range
+ *   sc_sweep_var_value        the i-th value
+ *   sc_sweep_var_free
+ *   sc_sweep_grid             the cartesian product of the variables, the first varying fastest
+ *   sc_sweep_grid_add         a parsed variable (names are unique)
+ *   sc_sweep_grid_find        a variable's index by name, -1 if absent
+ *   sc_sweep_grid_rows        the number of rows (0 if above SC_SWEEP_MAX_ROWS)
+ *   sc_sweep_grid_point       row index -> the value of every variable
+ *   sc_sweep_grid_free
+ *   sc_sweep_substitute       `$NAME` and `${NAME}` in a text -> the variable's value
+ *   sc_sweep_format_parse     "csv|tsv|jsonl" -> sc_sweep_format
+ *   sc_sweep_table            the columns of the output: variables then results
+ *   sc_sweep_write_header     the header line (csv, tsv; jsonl has none)
+ *   sc_sweep_format_row       one row as text
+ *   sc_sweep_row_max          an upper bound of the length of a formatted row
+ *   sc_sweep_run              evaluates every row on N threads, output in row order
+ *
+ * Values of the variables are doubles; they print (and substitute) as the shortest decimal that
+ * reads back to the same double, and the result columns as the shortest decimal that reads back
+ * to the same value of the table's precision (sc_format_shortest).
+ */
+#ifndef SHADECALC_SWEEP_H
+#define SHADECALC_SWEEP_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "shadecalc/precision.h"
+
+enum { SC_SWEEP_NAME_MAX = 32, SC_SWEEP_MAX_VARS = 8 };
+#define SC_SWEEP_MAX_ROWS 4503599627370496.0 /* 2^52 */
+
+typedef enum { SC_SPACING_LINEAR, SC_SPACING_LOG, SC_SPACING_LIST } sc_spacing;
+
+typedef struct {
+    char name[SC_SWEEP_NAME_MAX]; /* an identifier: [A-Za-z_][A-Za-z0-9_]* */
+    sc_spacing spacing;
+    double start, stop; /* ranges: the first and last values (inclusive) */
+    long count;         /* number of values, >= 1 */
+    double *list;       /* SC_SPACING_LIST: the count values (owned) */
+} sc_sweep_var;
+
+/* Parses "NAME=START:STOP:COUNT" or "NAME=V1,V2,..." (a single value is a list of one).
+ * Returns 0, or -1 with a message naming the argument in err. */
+int sc_sweep_var_parse(const char *arg, sc_sweep_var *out, char *err, size_t errsize);
+/* Makes a range geometric: START·(STOP/START)^(i/(COUNT−1)). -1 with err for a list, or for
+ * ends that are zero or of opposite signs. */
+int sc_sweep_var_set_log(sc_sweep_var *v, char *err, size_t errsize);
+/* The i-th value (0 <= i < count); a range ends exactly on START and STOP. */
+double sc_sweep_var_value(const sc_sweep_var *v, long i);
+void sc_sweep_var_free(sc_sweep_var *v);
+
+typedef struct {
+    sc_sweep_var var[SC_SWEEP_MAX_VARS];
+    int n;
+} sc_sweep_grid;
+
+/* Takes ownership of *v (also on failure: it is freed). -1 with err on a duplicate name or too
+ * many variables. */
+int sc_sweep_grid_add(sc_sweep_grid *g, sc_sweep_var *v, char *err, size_t errsize);
+int sc_sweep_grid_find(const sc_sweep_grid *g, const char *name);
+/* The product of the counts (1 for no variables); 0 if it exceeds SC_SWEEP_MAX_ROWS. */
+uint64_t sc_sweep_grid_rows(const sc_sweep_grid *g);
+/* values[k] = the value of variable k at `row`; variable 0 varies fastest. */
+void sc_sweep_grid_point(const sc_sweep_grid *g, uint64_t row, double *values);
+void sc_sweep_grid_free(sc_sweep_grid *g);
+
+/* Copies text to out, replacing each $NAME (the longest identifier after the $) and ${NAME} by
+ * the value of that variable in `values` (shortest round-trip decimal). Returns 0, or -1 with
+ * err: an unknown variable, a $ not followed by a name, or out too small. */
+int sc_sweep_substitute(const char *text, const sc_sweep_grid *g, const double *values,
+                        char *out, size_t size, char *err, size_t errsize);
+
+typedef enum { SC_SWEEP_CSV, SC_SWEEP_TSV, SC_SWEEP_JSONL } sc_sweep_format;
+
+/* 0, or -1 for a name that is not csv, tsv or jsonl. */
+int sc_sweep_format_parse(const char *name, sc_sweep_format *out);
+
+typedef struct {
+    sc_sweep_format format;
+    sc_prec prec;             /* of the result columns */
+    const char *const *names; /* n_vars + n_results column names */
+    int n_vars, n_results;
+} sc_sweep_table;
+
+/* Writes the header line (csv, tsv; nothing for jsonl). 0, or -1 on a write error. */
+int sc_sweep_write_header(FILE *out, const sc_sweep_table *t);
+/* Formats one row, newline included (jsonl: {"name": value, ...}, NaN and infinities as the
+ * strings "nan", "inf", "-inf"). Returns its length, or -1 if it does not fit in size. */
+int sc_sweep_format_row(char *buf, size_t size, const sc_sweep_table *t, const double *vars,
+                        const double *results);
+size_t sc_sweep_row_max(const sc_sweep_table *t);
+
+/* A sweep to run. eval is called concurrently from `threads` workers (worker = 0..threads−1,
+ * for per-worker state); consume, the text output and progress are called from the calling
+ * thread, in row order. */
+typedef struct {
+    const sc_sweep_grid *grid;
+    int n_results;
+    /* results[0..n_results) of one row; 0, or -1 with a message in err */
+    int (*eval)(void *user, int worker, const double *vars, double *results, char *err,
+                size_t errsize);
+    void *user;
+    /* optional: sees every row; 0, or -1 with err to stop */
+    int (*consume)(void *user, uint64_t row, const double *vars, const double *results,
+                   char *err, size_t errsize);
+    const sc_sweep_table *table; /* optional: rows written to out as text */
+    FILE *out;
+    /* optional: rows done so far, after each block */
+    void (*progress)(void *user, uint64_t done, uint64_t total);
+    int threads; /* >= 1 */
+} sc_sweep_job;
+
+typedef enum {
+    SC_SWEEP_OK = 0,
+    SC_SWEEP_FAILED = -1,      /* eval or consume: err holds "row N: message" */
+    SC_SWEEP_WRITE_ERROR = -2, /* writing to out failed: errno is the reason */
+    SC_SWEEP_NO_MEMORY = -3
+} sc_sweep_status;
+
+/* Evaluates every row of the grid; rows before a failing one are still written and consumed.
+ * The header is the caller's (sc_sweep_write_header). The output does not depend on threads. */
+sc_sweep_status sc_sweep_run(const sc_sweep_job *job, char *err, size_t errsize);
+
+#endif
