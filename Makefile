@@ -31,7 +31,7 @@ WARN     := -std=c11 -Wall -Wextra -Wpedantic -Werror
 OPT      ?= -O2 -g
 # FMA only where written (fma(), intrinsics): both compilers give the same bits.
 FPFLAGS  := -ffp-contract=off
-CPPFLAGS += -Iinclude -Isrc -I$(BUILD)/gen -D_POSIX_C_SOURCE=200809L -DSC_VERSION=\"$(VERSION)\"
+CPPFLAGS += -Iinclude -Isrc -I. -I$(BUILD)/gen -D_POSIX_C_SOURCE=200809L -DSC_VERSION=\"$(VERSION)\"
 ifeq ($(SAN),1)
 SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif

@@ -1,9 +1,10 @@
 #!/bin/sh
 # Installs the Debian packages the build and the tests need, only those missing.
-# Called by `make deps` (and so by `make all` and `make check`).
+# Called by `make deps` (and so by `make all` and `make check`). python3 is for the end-to-end
+# tests only: they parse the SVG and JSON output with a real parser.
 set -eu
 need=""
-for pkg in libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev; do
+for pkg in libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3; do
     dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed' || need="$need $pkg"
 done
 [ -z "$need" ] && exit 0

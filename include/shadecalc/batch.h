@@ -137,6 +137,9 @@ void sc_batch_error_init(sc_batch_error *acc);
  * pow u1 row counts only normal-float results (its stated domain). */
 double sc_batch_error_element(const sc_batch_entry *e, const sc_batch_args *a, size_t i,
                               sc_batch_error *acc);
+/* The same with the reference already computed (ref: e->ref's n_out + 1 values). */
+double sc_batch_error_against(const sc_batch_entry *e, const sc_batch_args *a, size_t i,
+                              const double *ref, sc_batch_error *acc);
 /* All a->n elements. */
 void sc_batch_error_of(const sc_batch_entry *e, const sc_batch_args *a, sc_batch_error *acc);
 

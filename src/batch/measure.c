@@ -35,8 +35,15 @@ void sc_batch_error_init(sc_batch_error *acc) { memset(acc, 0, sizeof *acc); }
 double sc_batch_error_element(const sc_batch_entry *e, const sc_batch_args *a, size_t i,
                               sc_batch_error *acc)
 {
-    double ref[4], worst = 0.0;
+    double ref[4];
     e->ref(a, i, ref);
+    return sc_batch_error_against(e, a, i, ref, acc);
+}
+
+double sc_batch_error_against(const sc_batch_entry *e, const sc_batch_args *a, size_t i,
+                              const double *ref, sc_batch_error *acc)
+{
+    double worst = 0.0;
     for (int j = 0; j < e->n_out; j++) {
         if (!stated(e, ref[j]))
             continue;

@@ -17,6 +17,14 @@
 #include "shadecalc/batch.h"
 #include "shadecalc/glsl.h"
 
+/* Drivers and lanes are inlined into each kernel, so that the lane function passed by pointer
+ * becomes straight-line code in the loop. */
+#if defined(__GNUC__)
+#define SC_INLINE inline __attribute__((always_inline))
+#else
+#define SC_INLINE inline
+#endif
+
 #define SC_CAT2(a, b) a##_##b
 #define SC_CAT(a, b) SC_CAT2(a, b)
 #define K(name) SC_CAT(sc_batch_##name, ISA_SUFFIX)
@@ -26,7 +34,7 @@
 typedef vf (*lane1_fn)(vf);
 typedef vf (*lane2_fn)(vf, vf);
 
-static inline void run1(const sc_batch_args *a, lane1_fn f)
+static SC_INLINE void run1(const sc_batch_args *a, lane1_fn f)
 {
     const float *x = a->in[0];
     float *out = a->out[0];
@@ -43,7 +51,7 @@ static inline void run1(const sc_batch_args *a, lane1_fn f)
     }
 }
 
-static inline void run2(const sc_batch_args *a, lane2_fn f)
+static SC_INLINE void run2(const sc_batch_args *a, lane2_fn f)
 {
     const float *x = a->in[0], *y = a->in[1];
     float *out = a->out[0];

@@ -60,7 +60,8 @@ static inline vi vi_sra23(vi a) { return a >= 0 ? a >> 23 : -1 - ((-1 - a) >> 23
 
 static inline vf vf_rsqrt_est(vf x)
 {
-    vf y = vi_as_vf(0x5f375a86 - (vf_as_vi(x) >> 1)); /* Lomont's constant */
+    uint32_t bits = (uint32_t)vf_as_vi(x); /* Lomont's constant; negative x gives NaN below */
+    vf y = vi_as_vf((vi)(0x5f375a86u - (bits >> 1)));
     y = y * (1.5f - 0.5f * x * y * y);
     return y * (1.5f - 0.5f * x * y * y);
 }

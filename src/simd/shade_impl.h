@@ -16,33 +16,32 @@ enum { MAX_IN = 9, MAX_OUT = 3 };
 
 /* ---- driver: k input arrays, m output arrays ---- */
 
-typedef void (*lane_n_fn)(const vf *in, vf *out, const sc_batch_scene *scene);
+/* A lane function loads its inputs in[j] + i and stores its outputs out[j] + i itself, with
+ * constant j: straight-line code, no copies. */
+typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i,
+                          const sc_batch_scene *scene);
 
-static inline void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
+static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 {
-    vf in[MAX_IN], out[MAX_OUT];
     size_t i = 0;
-    for (; i + VW <= a->n; i += VW) {
-        for (int j = 0; j < k; j++)
-            in[j] = vf_loadu(a->in[j] + i);
-        f(in, out, a->scene);
-        for (int j = 0; j < m; j++)
-            vf_storeu(a->out[j] + i, out[j]);
-    }
+    for (; i + VW <= a->n; i += VW)
+        f(a->in, a->out, i, a->scene);
     if (i == a->n)
         return;
-    float buf[VW];
-    for (int j = 0; j < k; j++) { /* the tail, padded with 1 */
+    float tail_in[MAX_IN][VW], tail_out[MAX_OUT][VW]; /* the tail, padded with 1 */
+    const float *in[MAX_IN] = {0};
+    float *out[MAX_OUT];
+    for (int j = 0; j < k; j++) {
         for (int l = 0; l < VW; l++)
-            buf[l] = i + (size_t)l < a->n ? a->in[j][i + (size_t)l] : 1.0f;
-        in[j] = vf_loadu(buf);
+            tail_in[j][l] = i + (size_t)l < a->n ? a->in[j][i + (size_t)l] : 1.0f;
+        in[j] = tail_in[j];
     }
-    f(in, out, a->scene);
-    for (int j = 0; j < m; j++) {
-        vf_storeu(buf, out[j]);
+    for (int j = 0; j < m; j++)
+        out[j] = tail_out[j];
+    f(in, out, 0, a->scene);
+    for (int j = 0; j < m; j++)
         for (size_t l = 0; i + l < a->n; l++)
-            a->out[j][i + l] = buf[l];
-    }
+            a->out[j][i + l] = tail_out[j][l];
 }
 
 #define BATCH_N(name, k, m, lane)                                                                 \
@@ -51,20 +50,20 @@ static inline void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 
 /* ---- the operations tiers choose ---- */
 
-static inline vf rcp_newton(vf x) /* r (2 − x r) */
+static SC_INLINE vf rcp_newton(vf x) /* r (2 − x r) */
 {
     vf r = vf_rcp_est(x);
     return vf_mul(r, vf_sub(vf_set1(2.0f), vf_mul(x, r)));
 }
 
-static inline vf tier_rsqrt(int tier, vf x)
+static SC_INLINE vf tier_rsqrt(int tier, vf x)
 {
     if (tier == ACCURATE)
         return vf_div(vf_set1(1.0f), vf_sqrt(x));
     return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
 }
 
-static inline vf tier_rcp(int tier, vf x)
+static SC_INLINE vf tier_rcp(int tier, vf x)
 {
     if (tier == ACCURATE)
         return vf_div(vf_set1(1.0f), x);
@@ -72,13 +71,13 @@ static inline vf tier_rcp(int tier, vf x)
 }
 
 /* sqrt of x > 0 */
-static inline vf tier_sqrt(int tier, vf x)
+static SC_INLINE vf tier_sqrt(int tier, vf x)
 {
     return tier == ACCURATE ? vf_sqrt(x) : vf_mul(x, tier_rsqrt(tier, x));
 }
 
 /* x^y for x in [2^-126, 1], y >= 1: the specular lobe (no special cases reach it) */
-static inline vf tier_pow(int tier, vf x, vf y)
+static SC_INLINE vf tier_pow(int tier, vf x, vf y)
 {
     if (tier == FAST12)
         return pow_bits12(x, y);
@@ -97,22 +96,26 @@ typedef struct {
     vf x, y, z;
 } v3;
 
-static inline v3 v3_load(const vf *in) { return (v3){in[0], in[1], in[2]}; }
-static inline void v3_store(v3 a, vf *out)
+/* components j, j+1, j+2 of the arrays, at element i */
+static SC_INLINE v3 v3_load(const float *const *in, int j, size_t i)
 {
-    out[0] = a.x;
-    out[1] = a.y;
-    out[2] = a.z;
+    return (v3){vf_loadu(in[j] + i), vf_loadu(in[j + 1] + i), vf_loadu(in[j + 2] + i)};
 }
-static inline vf v3_dot(v3 a, v3 b) { return vf_fma(a.x, b.x, vf_fma(a.y, b.y, vf_mul(a.z, b.z))); }
-static inline v3 v3_scale(v3 a, vf s) { return (v3){vf_mul(a.x, s), vf_mul(a.y, s), vf_mul(a.z, s)}; }
-static inline v3 v3_add(v3 a, v3 b) { return (v3){vf_add(a.x, b.x), vf_add(a.y, b.y), vf_add(a.z, b.z)}; }
-static inline v3 v3_sub(v3 a, v3 b) { return (v3){vf_sub(a.x, b.x), vf_sub(a.y, b.y), vf_sub(a.z, b.z)}; }
-static inline v3 v3_set1(const float *c) { return (v3){vf_set1(c[0]), vf_set1(c[1]), vf_set1(c[2])}; }
+static SC_INLINE void v3_store(v3 a, float *const *out, size_t i)
+{
+    vf_storeu(out[0] + i, a.x);
+    vf_storeu(out[1] + i, a.y);
+    vf_storeu(out[2] + i, a.z);
+}
+static SC_INLINE vf v3_dot(v3 a, v3 b) { return vf_fma(a.x, b.x, vf_fma(a.y, b.y, vf_mul(a.z, b.z))); }
+static SC_INLINE v3 v3_scale(v3 a, vf s) { return (v3){vf_mul(a.x, s), vf_mul(a.y, s), vf_mul(a.z, s)}; }
+static SC_INLINE v3 v3_add(v3 a, v3 b) { return (v3){vf_add(a.x, b.x), vf_add(a.y, b.y), vf_add(a.z, b.z)}; }
+static SC_INLINE v3 v3_sub(v3 a, v3 b) { return (v3){vf_sub(a.x, b.x), vf_sub(a.y, b.y), vf_sub(a.z, b.z)}; }
+static SC_INLINE v3 v3_set1(const float *c) { return (v3){vf_set1(c[0]), vf_set1(c[1]), vf_set1(c[2])}; }
 
 /* a / |a| given dd = a·a. The zero vector stays zero (dd is taken at least 2^-149); lanes
  * whose dd overflowed are scaled by 2^-100 first (rare: a branch, not a cost on every vector). */
-static inline v3 v3_normalize_dd(int tier, v3 a, vf dd)
+static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
 {
     vm big = vf_eq(dd, vf_set1(INFINITY));
     if (vm_any(big)) {
@@ -127,45 +130,48 @@ static inline v3 v3_normalize_dd(int tier, v3 a, vf dd)
     return v3_scale(a, tier_rsqrt(tier, dd));
 }
 
-static inline v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
+static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
 
-static inline void dot_lane(const vf *in, vf *out, const sc_batch_scene *s)
+static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i,
+                               const sc_batch_scene *s)
 {
     (void)s;
-    out[0] = v3_dot(v3_load(in), v3_load(in + 3));
+    vf_storeu(out[0] + i, v3_dot(v3_load(in, 0, i), v3_load(in, 3, i)));
 }
 
 /* reflect(I, N) = I − 2 (N·I) N (GLSL ES; N unit) */
-static inline void reflect_lane(const vf *in, vf *out, const sc_batch_scene *s)
+static SC_INLINE void reflect_lane(const float *const *in, float *const *out, size_t e,
+                                   const sc_batch_scene *s)
 {
     (void)s;
-    v3 i = v3_load(in), n = v3_load(in + 3);
+    v3 i = v3_load(in, 0, e), n = v3_load(in, 3, e);
     vf k = vf_mul(vf_set1(-2.0f), v3_dot(n, i));
-    v3_store((v3){vf_fma(k, n.x, i.x), vf_fma(k, n.y, i.y), vf_fma(k, n.z, i.z)}, out);
+    v3_store((v3){vf_fma(k, n.x, i.x), vf_fma(k, n.y, i.y), vf_fma(k, n.z, i.z)}, out, e);
 }
 
-static inline void length_tier(int tier, const vf *in, vf *out)
+static SC_INLINE void length_tier(int tier, const float *const *in, float *const *out, size_t i)
 {
-    v3 a = v3_load(in);
+    v3 a = v3_load(in, 0, i);
     vf dd = v3_dot(a, a);
     if (tier == ACCURATE) {
-        out[0] = vf_sqrt(dd);
+        vf_storeu(out[0] + i, vf_sqrt(dd));
         return;
     }
     vf est = vf_mul(dd, tier_rsqrt(tier, vf_max(dd, vf_set1(FLT_MIN))));
-    out[0] = vf_select(vf_eq(dd, vf_set1(INFINITY)), dd, est); /* not ∞ · 0 */
+    vf_storeu(out[0] + i, vf_select(vf_eq(dd, vf_set1(INFINITY)), dd, est)); /* not ∞ · 0 */
 }
 
 #define TIERED_LANE(name, body_fn, tier)                                                          \
-    static inline void name(const vf *in, vf *out, const sc_batch_scene *s)                       \
+    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
+                               const sc_batch_scene *s)                                           \
     {                                                                                             \
         (void)s;                                                                                  \
-        body_fn(tier, in, out);                                                                   \
+        body_fn(tier, in, out, i);                                                                \
     }
 
-static inline void normalize_tier(int tier, const vf *in, vf *out)
+static SC_INLINE void normalize_tier(int tier, const float *const *in, float *const *out, size_t i)
 {
-    v3_store(v3_normalize(tier, v3_load(in)), out);
+    v3_store(v3_normalize(tier, v3_load(in, 0, i)), out, i);
 }
 
 TIERED_LANE(normalize_acc, normalize_tier, ACCURATE)
@@ -189,12 +195,12 @@ static const float inv_pi_f = 0.318309886183790671538f;
 
 /* The specular part of f for one light (n, v unit; l unit), 0 for Lambert. nt is the tier of
  * the normalizations. */
-static inline vf specular(int tier, int nt, const sc_batch_scene *s, v3 n, v3 v, v3 l, vf nl, vf nv)
+static SC_INLINE vf specular(int tier, int nt, sc_batch_brdf brdf, const sc_batch_scene *s, v3 n, v3 v, v3 l, vf nl, vf nv)
 {
     v3 h = v3_add(l, v);
     vf inv_h = tier_rsqrt(nt, vf_max(v3_dot(h, h), vf_set1(FLT_MIN))); /* l = −v: h = 0 */
     vf nh = vf_max(vf_mul(v3_dot(n, h), inv_h), vf_set1(FLT_MIN));
-    if (s->brdf == SC_BATCH_BLINN_PHONG) /* (m+8)/(8π) (n·h)^m: RTR3 §7.6 */
+    if (brdf == SC_BATCH_BLINN_PHONG) /* (m+8)/(8π) (n·h)^m: RTR3 §7.6 */
         return vf_mul(vf_set1((s->m + 8.0f) * (inv_pi_f / 8.0f)), tier_pow(tier, nh, vf_set1(s->m)));
     /* GGX D = α² / (π (n·h² (α² − 1) + 1)²); V = G2/(4 n·l n·v) for Smith height-correlated
      * = 1 / (2 (n·l √(n·v² (1 − α²) + α²) + n·v √(n·l² (1 − α²) + α²))) (Heitz 2014 eq. 99);
@@ -213,52 +219,67 @@ static inline vf specular(int tier, int nt, const sc_batch_scene *s, v3 n, v3 v,
 
 /* Direction to light k and its irradiance factor (E_L, or I_L / max(r², 10^-4) for a point
  * light; a light at the shading point lights nothing: l = 0). */
-static inline v3 light_dir(int tier, int nt, const sc_batch_light *lt, const vf *in,
-                           vf *falloff)
+static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt,
+                              const float *const *in, size_t i, vf *falloff)
 {
     if (lt->kind == SC_BATCH_DIRECTIONAL) {
         *falloff = vf_set1(1.0f);
         return v3_set1(lt->dir);
     }
-    v3 d = v3_sub(v3_set1(lt->pos), v3_load(in + 6));
+    v3 d = v3_sub(v3_set1(lt->pos), v3_load(in, 6, i));
     vf r2 = v3_dot(d, d);
     *falloff = tier_rcp(tier, vf_min(vf_max(r2, vf_set1(1e-4f)), vf_set1(FLT_MAX)));
     return v3_normalize_dd(nt, d, r2);
 }
 
-static inline void shade_tier(int tier, const vf *in, vf *out, const sc_batch_scene *s)
+/* The shading equation for one vector of elements; brdf is a constant at each call (one loop
+ * per BRDF, chosen once per call), so that the lobe is straight-line code. Colours are v3
+ * (x, y, z = r, g, b). */
+static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *const *in,
+                                 float *const *out, size_t i, const sc_batch_scene *s)
 {
     int nt = tier == FAST8 ? FAST12 : tier;
-    v3 n = v3_normalize(nt, v3_load(in)), v = v3_normalize(nt, v3_load(in + 3));
+    v3 n = v3_normalize(nt, v3_load(in, 0, i)), v = v3_normalize(nt, v3_load(in, 3, i));
     vf nv = v3_dot(n, v);
-    vf acc[3] = {vf_set1(s->amb_term[0]), vf_set1(s->amb_term[1]), vf_set1(s->amb_term[2])};
+    const float diff_pi[3] = {s->diff[0] * inv_pi_f, s->diff[1] * inv_pi_f, s->diff[2] * inv_pi_f};
+    v3 acc = v3_set1(s->amb_term), kd = v3_set1(diff_pi), ks = v3_set1(s->spec);
     for (int k = 0; k < s->n_lights; k++) {
         const sc_batch_light *lt = &s->lights[k];
         vf falloff;
-        v3 l = light_dir(tier, nt, lt, in, &falloff);
+        v3 l = light_dir(tier, nt, lt, in, i, &falloff);
         vf nl = v3_dot(n, l);
         vm lit = vm_and(vf_lt(vf_set1(0.0f), nl), vf_lt(vf_set1(0.0f), nv));
         vf w = vf_select(lit, vf_mul(nl, falloff), vf_set1(0.0f)); /* cos θ_i · falloff */
-        vf sp = vf_set1(0.0f); /* unlit lanes drop the lobe: it may be ∞ or NaN there */
-        if (s->brdf != SC_BATCH_LAMBERT)
-            sp = vf_select(lit, specular(tier, nt, s, n, v, l, nl, nv), sp);
-        for (int c = 0; c < 3; c++) {
-            vf f = vf_fma(vf_set1(s->spec[c]), sp, vf_set1(s->diff[c] * inv_pi_f));
-            acc[c] = vf_fma(vf_mul(f, vf_set1(lt->color[c])), w, acc[c]);
+        v3 f = kd;
+        if (brdf != SC_BATCH_LAMBERT) { /* unlit lanes drop the lobe: it may be ∞ or NaN there */
+            vf sp = vf_select(lit, specular(tier, nt, brdf, s, n, v, l, nl, nv), vf_set1(0.0f));
+            f = (v3){vf_fma(ks.x, sp, kd.x), vf_fma(ks.y, sp, kd.y), vf_fma(ks.z, sp, kd.z)};
         }
+        v3 e = v3_scale(v3_set1(lt->color), w);
+        acc = (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
     }
-    for (int c = 0; c < 3; c++)
-        out[c] = acc[c];
+    v3_store(acc, out, i);
 }
 
-#define SHADE_LANE(name, tier)                                                                    \
-    static inline void name(const vf *in, vf *out, const sc_batch_scene *s)                       \
+#define SHADE_LANE(name, tier, brdf)                                                              \
+    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
+                               const sc_batch_scene *s)                                           \
     {                                                                                             \
-        shade_tier(tier, in, out, s);                                                             \
+        shade_tier(tier, brdf, in, out, i, s);                                                    \
     }
-SHADE_LANE(shade_acc, ACCURATE)
-SHADE_LANE(shade_f12, FAST12)
-SHADE_LANE(shade_f8, FAST8)
-BATCH_N(shade_accurate, 9, 3, shade_acc)
-BATCH_N(shade_bits12, 9, 3, shade_f12)
-BATCH_N(shade_bits8, 9, 3, shade_f8)
+#define SHADE_KERNEL(name, tier)                                                                  \
+    SHADE_LANE(name##_lambert, tier, SC_BATCH_LAMBERT)                                            \
+    SHADE_LANE(name##_blinn, tier, SC_BATCH_BLINN_PHONG)                                          \
+    SHADE_LANE(name##_ggx, tier, SC_BATCH_GGX)                                                    \
+    void K(name)(const sc_batch_args *a);                                                         \
+    void K(name)(const sc_batch_args *a)                                                          \
+    {                                                                                             \
+        switch (a->scene->brdf) {                                                                 \
+        case SC_BATCH_LAMBERT: run_n(a, 9, 3, name##_lambert); break;                             \
+        case SC_BATCH_BLINN_PHONG: run_n(a, 9, 3, name##_blinn); break;                           \
+        default: run_n(a, 9, 3, name##_ggx); break;                                               \
+        }                                                                                         \
+    }
+SHADE_KERNEL(shade_accurate, ACCURATE)
+SHADE_KERNEL(shade_bits12, FAST12)
+SHADE_KERNEL(shade_bits8, FAST8)

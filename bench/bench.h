@@ -1,0 +1,63 @@
+/* The benchmark harness behind `shadecalc bench` (src/cli/cmd_bench.c): cases, timing,
+ * accuracy, the machine's measured bounds, the report. */
+#ifndef SHADECALC_BENCH_H
+#define SHADECALC_BENCH_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "shadecalc/batch.h"
+
+/* ---- the plain loops a user would write with libm (bench/libm_loops.c) ---- */
+
+/* The loop for a kernel, with the project's ordinary flags; NULL if none. */
+sc_batch_fn bench_libm_loop(const char *kernel);
+
+/* ---- the machine (bench/machine.c) ---- */
+
+typedef struct {
+    char cpu[128];
+    double bandwidth;     /* bytes per ns, measured: read + written by a stream loop */
+    double scalar_ops_ns; /* independent scalar float add/mul per ns, measured */
+} bench_machine;
+
+void bench_machine_measure(bench_machine *m);
+int bench_isa_width(sc_isa isa);
+
+/* ---- cases: kernel × isa × tier (× scene for shade) × size ---- */
+
+typedef struct {
+    const char *kernel, *isa, *tier; /* isa "libm" and tier "loop" for the plain loop */
+    const char *scene;               /* "lambert 1d", …; "" for non-shading kernels */
+    size_t n;
+    double ns_per_elem, ns_min, ns_max;
+    double speedup_vs_scalar, speedup_vs_libm;
+    sc_batch_error err;
+    double bound_ulp;     /* the stated bound, or < 0 if stated otherwise */
+    double bound_rel;
+    double roofline_ns;   /* max(compute bound, memory bound) per element */
+    double roofline_fraction; /* roofline_ns / ns_per_elem */
+    int pareto;           /* not beaten in both error and speed among the kernel's rows */
+} bench_row;
+
+typedef struct {
+    const char *kernels[32];
+    int n_kernels;          /* 0: all */
+    int isa_mask;           /* bit per sc_isa; 0: all supported */
+    const char *tiers[16];
+    int n_tiers;            /* 0: all */
+    size_t sizes[4];
+    int n_sizes;
+    int repeat;
+    int progress;           /* draw a progress bar on stderr */
+} bench_options;
+
+/* Runs every selected case; *rows is malloc'ed. Returns 0, or -1 out of memory. */
+int bench_run(const bench_options *o, const bench_machine *m, bench_row **rows, int *n_rows);
+
+/* ---- report (bench/report.c) ---- */
+enum { BENCH_TABLE, BENCH_CSV, BENCH_JSON };
+void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n);
+void bench_list(FILE *out, int format);
+
+#endif

@@ -1,0 +1,370 @@
+/* `shadecalc bench`: every selected kernel × instruction set × tier (× scene for shade) × size
+ * on the same inputs — time (median of K repeats after a warm-up, min, max), accuracy against
+ * the double reference, speedups against the scalar accurate kernel and the libm loop, the
+ * roofline bound. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench/bench.h"
+#include "bench/timer.h"
+
+enum { ACCURACY_SAMPLE = 1 << 16, MIN_SAMPLE_NS = 200000, MAX_ROWS = 4096 };
+
+/* The scenes shade is measured with: what a scene names is what it pays for. */
+typedef struct {
+    const char *name;
+    sc_batch_brdf brdf;
+    int n_dir, n_point;
+} bench_scene;
+static const bench_scene scenes[] = {
+    {"lambert 1d", SC_BATCH_LAMBERT, 1, 0},       {"blinn-phong 1d", SC_BATCH_BLINN_PHONG, 1, 0},
+    {"ggx 1d", SC_BATCH_GGX, 1, 0},               {"blinn-phong 1p", SC_BATCH_BLINN_PHONG, 0, 1},
+    {"blinn-phong 1d+3p", SC_BATCH_BLINN_PHONG, 1, 3},
+};
+enum { N_SCENES = (int)(sizeof scenes / sizeof scenes[0]) };
+
+/* Arithmetic operations per element of shade, counted from src/simd/shade_impl.h (an FMA, a
+ * division or an estimate counts one): normalizing n and v and n·v; per light its direction
+ * and falloff, the cosine and the colour sums; the lobe. */
+static double shade_ops(const sc_batch_scene *s)
+{
+    static const double lobe[] = {0, 46, 52};
+    double ops = 33;
+    for (int k = 0; k < s->n_lights; k++)
+        ops += 19 + (s->lights[k].kind == SC_BATCH_POINT ? 23 : 0) + lobe[s->brdf];
+    return ops;
+}
+
+/* Input arrays a kernel reads for a scene: shade reads p only for point lights. */
+static int inputs_read(const sc_batch_entry *e, const sc_batch_scene *s)
+{
+    if (!s)
+        return e->n_in;
+    for (int k = 0; k < s->n_lights; k++)
+        if (s->lights[k].kind == SC_BATCH_POINT)
+            return 9;
+    return 6;
+}
+
+/* ---- data of one kernel × scene × size: inputs, reference, output buffers ---- */
+
+typedef struct {
+    float *in[9], *out[3];
+    double *ref; /* (n_out + 1) per element, for the first `checked` elements */
+    size_t n, checked;
+    sc_batch_scene scene;
+    int has_scene;
+} bench_data;
+
+static void data_free(bench_data *d)
+{
+    for (int j = 0; j < 9; j++)
+        free(d->in[j]);
+    for (int j = 0; j < 3; j++)
+        free(d->out[j]);
+    free(d->ref);
+}
+
+static sc_batch_args data_args(bench_data *d)
+{
+    sc_batch_args a = {{0}, {0}, d->n, d->has_scene ? &d->scene : NULL};
+    for (int j = 0; j < 9; j++)
+        a.in[j] = d->in[j];
+    for (int j = 0; j < 3; j++)
+        a.out[j] = d->out[j];
+    return a;
+}
+
+/* Inputs from the domain of `domain_of` (the kernel's narrowest tier: valid for all tiers). */
+static int data_make(bench_data *d, const sc_batch_entry *domain_of, size_t n, const bench_scene *bs)
+{
+    memset(d, 0, sizeof *d);
+    d->n = n;
+    d->checked = n < ACCURACY_SAMPLE ? n : ACCURACY_SAMPLE;
+    if (bs) {
+        sc_batch_scene_example(bs->brdf, bs->n_dir, bs->n_point, &d->scene);
+        d->has_scene = 1;
+    }
+    for (int j = 0; j < domain_of->n_in; j++)
+        if (!(d->in[j] = malloc(n * sizeof(float))))
+            return -1;
+    for (int j = 0; j < domain_of->n_out; j++)
+        if (!(d->out[j] = calloc(n, sizeof(float))))
+            return -1;
+    if (!(d->ref = malloc(d->checked * 4 * sizeof(double))))
+        return -1;
+    uint64_t rng = 0x9E3779B97F4A7C15ULL;
+    for (size_t i = 0; i < n; i++) {
+        float v[9];
+        sc_batch_sample(domain_of, &rng, v);
+        for (int j = 0; j < domain_of->n_in; j++)
+            d->in[j][i] = v[j];
+    }
+    sc_batch_args a = data_args(d);
+    for (size_t i = 0; i < d->checked; i++)
+        domain_of->ref(&a, i, d->ref + 4 * i);
+    return 0;
+}
+
+/* ---- timing ---- */
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* ns per element: median, min, max of `repeat` samples, each of enough calls to last 0.2 ms */
+static void time_fn(sc_batch_fn fn, const sc_batch_args *a, int repeat, bench_row *r)
+{
+    double t0 = bench_now_ns();
+    fn(a); /* warm-up, and the calibration of calls per sample */
+    double once = bench_now_ns() - t0;
+    int calls = once > 0 && once < MIN_SAMPLE_NS ? (int)(MIN_SAMPLE_NS / once) + 1 : 1;
+    double samples[64];
+    if (repeat > 64)
+        repeat = 64;
+    for (int k = 0; k < repeat; k++) {
+        t0 = bench_now_ns();
+        for (int c = 0; c < calls; c++)
+            fn(a);
+        samples[k] = (bench_now_ns() - t0) / ((double)calls * (double)a->n);
+    }
+    qsort(samples, (size_t)repeat, sizeof samples[0], compare_doubles);
+    r->ns_per_elem = samples[repeat / 2];
+    r->ns_min = samples[0];
+    r->ns_max = samples[repeat - 1];
+}
+
+static void accuracy(const sc_batch_entry *e, bench_data *d, bench_row *r)
+{
+    sc_batch_args a = data_args(d);
+    sc_batch_error_init(&r->err);
+    for (size_t i = 0; i < d->checked; i++)
+        sc_batch_error_against(e, &a, i, d->ref + 4 * i, &r->err);
+}
+
+/* ---- selection ---- */
+
+static int contains(const char *name, const char *const *list, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(list[i], name) == 0)
+            return 1;
+    return 0;
+}
+
+/* An empty selection selects everything. */
+static int selected(const char *name, const char *const *list, int n)
+{
+    return n == 0 || contains(name, list, n);
+}
+
+static int entry_selected(const bench_options *o, const sc_batch_entry *e)
+{
+    return sc_isa_supported(e->isa) && (o->isa_mask == 0 || (o->isa_mask >> e->isa & 1)) &&
+           selected(e->tier, o->tiers, o->n_tiers);
+}
+
+/* The kernel's last table entry for the scalar ISA: its narrowest domain; and its first: the
+ * accurate tier, the baseline of the speedups. */
+static const sc_batch_entry *kernel_entry(const char *kernel, int last)
+{
+    const sc_batch_entry *found = NULL;
+    for (int i = 0; i < sc_batch_count; i++)
+        if (sc_batch_table[i].isa == SC_ISA_SCALAR && strcmp(sc_batch_table[i].kernel, kernel) == 0) {
+            found = &sc_batch_table[i];
+            if (!last)
+                break;
+        }
+    return found;
+}
+
+/* ---- one kernel × scene × size ---- */
+
+typedef struct {
+    const bench_options *o;
+    const bench_machine *m;
+    bench_row *rows;
+    int n_rows, done, total;
+} bench_state;
+
+static void progress(bench_state *st, const char *what)
+{
+    st->done++;
+    if (!st->o->progress)
+        return;
+    int width = 30, filled = st->total ? st->done * width / st->total : width;
+    fprintf(stderr, "\r[%.*s%*s] %d/%d %-40.40s", filled, "##############################",
+            width - filled, "", st->done, st->total, what);
+    if (st->done == st->total)
+        fprintf(stderr, "\r%*s\r", width + 60, "");
+    fflush(stderr);
+}
+
+static bench_row *add_row(bench_state *st, const char *kernel, const char *isa, const char *tier,
+                          const char *scene, size_t n)
+{
+    if (st->n_rows >= MAX_ROWS)
+        return NULL;
+    bench_row *r = &st->rows[st->n_rows++];
+    memset(r, 0, sizeof *r);
+    r->kernel = kernel;
+    r->isa = isa;
+    r->tier = tier;
+    r->scene = scene;
+    r->n = n;
+    r->bound_ulp = -1.0;
+    return r;
+}
+
+static void roofline(const bench_state *st, const sc_batch_entry *e, const bench_data *d,
+                     int width, bench_row *r)
+{
+    const sc_batch_scene *s = d->has_scene ? &d->scene : NULL;
+    double ops = s ? shade_ops(s) : e->ops;
+    double compute = ops / (st->m->scalar_ops_ns * width);
+    double bytes = 4.0 * (inputs_read(e, s) + e->n_out);
+    double memory = st->m->bandwidth > 0 ? bytes / st->m->bandwidth : 0.0;
+    int streaming = bytes * (double)d->n > 8.0 * (1 << 20);
+    r->roofline_ns = streaming && memory > compute ? memory : compute;
+    r->roofline_fraction = r->roofline_ns / r->ns_per_elem;
+}
+
+static void measure_entry(bench_state *st, const sc_batch_entry *e, bench_data *d,
+                          const char *scene_name)
+{
+    bench_row *r = add_row(st, e->kernel, sc_isa_name(e->isa), e->tier, scene_name, d->n);
+    if (!r)
+        return;
+    sc_batch_args a = data_args(d);
+    time_fn(e->fn, &a, st->o->repeat, r);
+    accuracy(e, d, r);
+    r->bound_ulp = e->bound_ulp > 0 ? e->bound_ulp : -1.0;
+    r->bound_rel = e->bound_rel;
+    roofline(st, e, d, bench_isa_width(e->isa), r);
+    char what[96];
+    snprintf(what, sizeof what, "%s %s %s %s", e->kernel, sc_isa_name(e->isa), e->tier, scene_name);
+    progress(st, what);
+}
+
+static void measure_libm(bench_state *st, const sc_batch_entry *accurate, bench_data *d,
+                         const char *scene_name)
+{
+    sc_batch_fn loop = bench_libm_loop(accurate->kernel);
+    bench_row *r = loop ? add_row(st, accurate->kernel, "libm", "loop", scene_name, d->n) : NULL;
+    if (!r)
+        return;
+    sc_batch_args a = data_args(d);
+    time_fn(loop, &a, st->o->repeat, r);
+    accuracy(accurate, d, r);
+    roofline(st, accurate, d, 1, r);
+    progress(st, "libm loop");
+}
+
+/* Speedups of the rows [first, end) against their scalar accurate and libm rows. */
+static void speedups(bench_row *rows, int first, int end, const char *accurate_tier)
+{
+    double scalar = 0, libm = 0;
+    for (int i = first; i < end; i++) {
+        if (strcmp(rows[i].isa, "scalar") == 0 && strcmp(rows[i].tier, accurate_tier) == 0)
+            scalar = rows[i].ns_per_elem;
+        if (strcmp(rows[i].isa, "libm") == 0)
+            libm = rows[i].ns_per_elem;
+    }
+    for (int i = first; i < end; i++) {
+        rows[i].speedup_vs_scalar = scalar > 0 ? scalar / rows[i].ns_per_elem : 0;
+        rows[i].speedup_vs_libm = libm > 0 ? libm / rows[i].ns_per_elem : 0;
+    }
+}
+
+/* Pareto set of rows [first, end): not beaten in both max ULP and time by another row. */
+static void pareto(bench_row *rows, int first, int end)
+{
+    for (int i = first; i < end; i++) {
+        rows[i].pareto = 1;
+        for (int j = first; j < end && rows[i].pareto; j++) {
+            const bench_row *a = &rows[j], *b = &rows[i];
+            int no_worse = a->err.max_ulp <= b->err.max_ulp && a->ns_per_elem <= b->ns_per_elem;
+            int better = a->err.max_ulp < b->err.max_ulp || a->ns_per_elem < b->ns_per_elem;
+            if (j != i && no_worse && better)
+                rows[i].pareto = 0;
+        }
+    }
+}
+
+static int measure_group(bench_state *st, const char *kernel, const bench_scene *bs, size_t n)
+{
+    const sc_batch_entry *narrow = kernel_entry(kernel, 1), *accurate = kernel_entry(kernel, 0);
+    bench_data d;
+    if (data_make(&d, narrow, n, bs) != 0) {
+        data_free(&d);
+        return -1;
+    }
+    const char *scene_name = bs ? bs->name : "";
+    int first = st->n_rows;
+    for (int i = 0; i < sc_batch_count; i++) {
+        const sc_batch_entry *e = &sc_batch_table[i];
+        int baseline = e == accurate;
+        if (strcmp(e->kernel, kernel) == 0 && (baseline || entry_selected(st->o, e)))
+            measure_entry(st, e, &d, scene_name);
+    }
+    measure_libm(st, accurate, &d, scene_name);
+    speedups(st->rows, first, st->n_rows, accurate->tier);
+    pareto(st->rows, first, st->n_rows);
+    data_free(&d);
+    return 0;
+}
+
+/* ---- the whole run ---- */
+
+/* Kernels in table order, each once, filtered by the options. */
+static int kernel_list(const bench_options *o, const char **out)
+{
+    int n = 0;
+    for (int i = 0; i < sc_batch_count; i++) {
+        const char *k = sc_batch_table[i].kernel;
+        if (sc_batch_table[i].isa == SC_ISA_SCALAR && selected(k, o->kernels, o->n_kernels) &&
+            !contains(k, out, n))
+            out[n++] = k;
+    }
+    return n;
+}
+
+static int count_rows(const bench_options *o, const char *const *kernels, int n_kernels)
+{
+    int total = 0;
+    for (int k = 0; k < n_kernels; k++) {
+        int per = 1; /* the libm loop */
+        const sc_batch_entry *accurate = kernel_entry(kernels[k], 0);
+        for (int i = 0; i < sc_batch_count; i++) {
+            const sc_batch_entry *e = &sc_batch_table[i];
+            per += strcmp(e->kernel, kernels[k]) == 0 && (e == accurate || entry_selected(o, e));
+        }
+        total += per * (strcmp(kernels[k], "shade") == 0 ? N_SCENES : 1);
+    }
+    return total * o->n_sizes;
+}
+
+int bench_run(const bench_options *o, const bench_machine *m, bench_row **rows, int *n_rows)
+{
+    const char *kernels[64];
+    int n_kernels = kernel_list(o, kernels);
+    bench_state st = {o, m, calloc(MAX_ROWS, sizeof(bench_row)), 0, 0, 0};
+    if (!st.rows)
+        return -1;
+    st.total = count_rows(o, kernels, n_kernels);
+    for (int s = 0; s < o->n_sizes; s++)
+        for (int k = 0; k < n_kernels; k++) {
+            int shade = strcmp(kernels[k], "shade") == 0;
+            for (int c = 0; c < (shade ? N_SCENES : 1); c++)
+                if (measure_group(&st, kernels[k], shade ? &scenes[c] : NULL, o->sizes[s]) != 0) {
+                    free(st.rows);
+                    return -1;
+                }
+        }
+    *rows = st.rows;
+    *n_rows = st.n_rows;
+    return 0;
+}

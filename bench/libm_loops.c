@@ -1,0 +1,153 @@
+/* The loops a user would write with libm, one per batch kernel: the baseline of `shadecalc
+ * bench` ("speedup vs libm loop"). Compiled with the project's ordinary flags (-O2, no
+ * -ffast-math), as the issue asks; the compiler vectorises what it can. */
+#include <math.h>
+#include <string.h>
+
+#include "bench/bench.h"
+
+static const float SC_PI_F = 3.14159265358979323846f;
+
+#define LOOP1(name, expr)                                                                         \
+    static void loop_##name(const sc_batch_args *a)                                               \
+    {                                                                                             \
+        const float *x = a->in[0];                                                                \
+        float *out = a->out[0];                                                                   \
+        for (size_t i = 0; i < a->n; i++)                                                         \
+            out[i] = (expr);                                                                      \
+    }
+LOOP1(exp2, exp2f(x[i]))
+LOOP1(exp, expf(x[i]))
+LOOP1(log2, log2f(x[i]))
+LOOP1(log, logf(x[i]))
+LOOP1(inversesqrt, 1.0f / sqrtf(x[i]))
+LOOP1(sqrt, sqrtf(x[i]))
+
+static void loop_pow(const sc_batch_args *a)
+{
+    for (size_t i = 0; i < a->n; i++)
+        a->out[0][i] = powf(a->in[0][i], a->in[1][i]);
+}
+
+static void loop_dot(const sc_batch_args *a)
+{
+    for (size_t i = 0; i < a->n; i++)
+        a->out[0][i] = a->in[0][i] * a->in[3][i] + a->in[1][i] * a->in[4][i] +
+                       a->in[2][i] * a->in[5][i];
+}
+
+static void loop_reflect(const sc_batch_args *a)
+{
+    for (size_t i = 0; i < a->n; i++) {
+        float d = a->in[3][i] * a->in[0][i] + a->in[4][i] * a->in[1][i] + a->in[5][i] * a->in[2][i];
+        for (int c = 0; c < 3; c++)
+            a->out[c][i] = a->in[c][i] - 2.0f * d * a->in[3 + c][i];
+    }
+}
+
+static void loop_normalize(const sc_batch_args *a)
+{
+    for (size_t i = 0; i < a->n; i++) {
+        float x = a->in[0][i], y = a->in[1][i], z = a->in[2][i];
+        float len = sqrtf(x * x + y * y + z * z);
+        a->out[0][i] = x / len;
+        a->out[1][i] = y / len;
+        a->out[2][i] = z / len;
+    }
+}
+
+static void loop_length(const sc_batch_args *a)
+{
+    for (size_t i = 0; i < a->n; i++) {
+        float x = a->in[0][i], y = a->in[1][i], z = a->in[2][i];
+        a->out[0][i] = sqrtf(x * x + y * y + z * z);
+    }
+}
+
+/* ---- the shading equation as a user writes it: float, sqrtf, powf ---- */
+
+static float dot3(const float *a, const float *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static void unit(float *v)
+{
+    float len = sqrtf(dot3(v, v));
+    if (len > 0.0f)
+        for (int c = 0; c < 3; c++)
+            v[c] /= len;
+}
+
+static float specular(const sc_batch_scene *s, const float *n, const float *v, const float *l,
+                      float nl, float nv)
+{
+    float h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
+    unit(h);
+    float nh = fmaxf(dot3(n, h), 0.0f);
+    if (s->brdf == SC_BATCH_BLINN_PHONG)
+        return (s->m + 8.0f) / (8.0f * SC_PI_F) * powf(nh, s->m);
+    float a2 = s->alpha * s->alpha, d = nh * nh * (a2 - 1.0f) + 1.0f;
+    float D = a2 / (SC_PI_F * d * d);
+    float V = 0.5f / (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
+    float F = s->f0 + (1.0f - s->f0) * powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f);
+    return D * V * F;
+}
+
+static void shade_one(const sc_batch_scene *s, float n[3], float v[3], const float p[3], float *rgb)
+{
+    unit(n);
+    unit(v);
+    float nv = dot3(n, v);
+    for (int c = 0; c < 3; c++)
+        rgb[c] = s->amb_term[c];
+    for (int k = 0; k < s->n_lights; k++) {
+        const sc_batch_light *lt = &s->lights[k];
+        float l[3], e = 1.0f;
+        memcpy(l, lt->dir, sizeof l);
+        if (lt->kind == SC_BATCH_POINT) {
+            for (int c = 0; c < 3; c++)
+                l[c] = lt->pos[c] - p[c];
+            e = 1.0f / fmaxf(dot3(l, l), 1e-4f);
+            unit(l);
+        }
+        float nl = dot3(n, l);
+        if (nl <= 0.0f || nv <= 0.0f)
+            continue;
+        float sp = s->brdf == SC_BATCH_LAMBERT ? 0.0f : specular(s, n, v, l, nl, nv);
+        for (int c = 0; c < 3; c++)
+            rgb[c] += (s->diff[c] / SC_PI_F + s->spec[c] * sp) * lt->color[c] * e * nl;
+    }
+}
+
+static void loop_shade(const sc_batch_args *a)
+{
+    for (size_t i = 0; i < a->n; i++) {
+        float n[3], v[3], p[3], rgb[3];
+        for (int c = 0; c < 3; c++) {
+            n[c] = a->in[c][i];
+            v[c] = a->in[3 + c][i];
+            p[c] = a->in[6 + c][i];
+        }
+        shade_one(a->scene, n, v, p, rgb);
+        for (int c = 0; c < 3; c++)
+            a->out[c][i] = rgb[c];
+    }
+}
+
+static const struct {
+    const char *kernel;
+    sc_batch_fn fn;
+} loops[] = {
+    {"exp2", loop_exp2},       {"exp", loop_exp},
+    {"log2", loop_log2},       {"log", loop_log},
+    {"pow", loop_pow},         {"inversesqrt", loop_inversesqrt},
+    {"sqrt", loop_sqrt},       {"dot", loop_dot},
+    {"reflect", loop_reflect}, {"normalize", loop_normalize},
+    {"length", loop_length},   {"shade", loop_shade},
+};
+
+sc_batch_fn bench_libm_loop(const char *kernel)
+{
+    for (size_t i = 0; i < sizeof loops / sizeof loops[0]; i++)
+        if (strcmp(loops[i].kernel, kernel) == 0)
+            return loops[i].fn;
+    return NULL;
+}

@@ -1,0 +1,93 @@
+/* The machine's description and the two measured bounds of the roofline: memory bandwidth
+ * (a stream loop over arrays far larger than the last-level cache) and floating-point
+ * throughput (independent scalar add/mul chains; a vector instruction does VW lanes of such
+ * work in the same time on the AVX2 machines we target). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "bench/bench.h"
+#include "bench/timer.h"
+
+static void cpu_name(char *out, size_t size)
+{
+    snprintf(out, size, "unknown");
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (!f)
+        return;
+    char line[256];
+    while (fgets(line, sizeof line, f))
+        if (strncmp(line, "model name", 10) == 0) {
+            const char *colon = strchr(line, ':');
+            if (colon) {
+                snprintf(out, size, "%s", colon + 2);
+                out[strcspn(out, "\n")] = '\0';
+            }
+            break;
+        }
+    fclose(f);
+}
+
+/* b = 2a + 1 over 2 × 128 MiB: bytes read plus written per ns, best of 3. */
+static double stream_bandwidth(void)
+{
+    enum { N = 32 << 20 };
+    float *a = malloc(N * sizeof *a), *b = malloc(N * sizeof *b);
+    if (!a || !b) {
+        free(a);
+        free(b);
+        return 0.0;
+    }
+    for (size_t i = 0; i < N; i++)
+        a[i] = b[i] = (float)i;
+    double best = 0.0;
+    for (int r = 0; r < 3; r++) {
+        double t0 = bench_now_ns();
+        for (size_t i = 0; i < N; i++)
+            b[i] = 2.0f * a[i] + 1.0f;
+        double t = bench_now_ns() - t0;
+        bench_keep(b[N / 2]);
+        if (t > 0 && 2.0 * N * sizeof(float) / t > best)
+            best = 2.0 * N * sizeof(float) / t;
+    }
+    free(a);
+    free(b);
+    return best;
+}
+
+/* 8 independent chains x = x·m + c (a multiply and an add each): ops per ns, best of 3. */
+static double scalar_throughput(void)
+{
+    enum { ITER = 20000000, CHAINS = 8 };
+    double best = 0.0;
+    for (int r = 0; r < 3; r++) {
+        volatile float seed = 1.0f;
+        float x[CHAINS];
+        for (int k = 0; k < CHAINS; k++)
+            x[k] = seed + (float)k;
+        double t0 = bench_now_ns();
+        for (int i = 0; i < ITER; i++)
+            for (int k = 0; k < CHAINS; k++)
+                x[k] = x[k] * 0.999999f + 1e-7f;
+        double t = bench_now_ns() - t0;
+        for (int k = 0; k < CHAINS; k++)
+            bench_keep(x[k]);
+        if (t > 0 && 2.0 * ITER * CHAINS / t > best)
+            best = 2.0 * ITER * CHAINS / t;
+    }
+    return best;
+}
+
+void bench_machine_measure(bench_machine *m)
+{
+    cpu_name(m->cpu, sizeof m->cpu);
+    m->bandwidth = stream_bandwidth();
+    m->scalar_ops_ns = scalar_throughput();
+}
+
+int bench_isa_width(sc_isa isa)
+{
+    static const int width[SC_ISA_COUNT] = {1, 4, 8};
+    return width[isa];
+}

@@ -1,0 +1,138 @@
+/* The report of `shadecalc bench` (table, CSV, JSON) and its --list (the batch table). */
+#include <math.h>
+#include <string.h>
+
+#include "bench/bench.h"
+
+static const char *bound_text(const sc_batch_entry *e, char *buf, size_t size)
+{
+    if (e->bound_ulp > 0)
+        snprintf(buf, size, "%g ulp", e->bound_ulp);
+    else if (e->bound_rel > 0)
+        snprintf(buf, size, "rel 2^%d%s", (int)lround(log2(e->bound_rel)), e->bound_abs > 0 ? " + abs" : "");
+    else
+        snprintf(buf, size, "abs 2^%d x scale", (int)lround(log2(e->bound_abs)));
+    return buf;
+}
+
+/* The instruction sets of the rows of kernel × tier, "scalar,sse4.1,avx2" */
+static void isa_list(const sc_batch_entry *first, char *buf, size_t size)
+{
+    buf[0] = '\0';
+    for (int i = 0; i < sc_batch_count; i++) {
+        const sc_batch_entry *e = &sc_batch_table[i];
+        if (strcmp(e->kernel, first->kernel) == 0 && strcmp(e->tier, first->tier) == 0) {
+            size_t len = strlen(buf);
+            snprintf(buf + len, size - len, "%s%s", len ? "," : "", sc_isa_name(e->isa));
+        }
+    }
+}
+
+void bench_list(FILE *out, int format)
+{
+    if (format == BENCH_CSV)
+        fprintf(out, "kernel,tier,isas,bound,domain\n");
+    else
+        fprintf(out, "%-12s %-9s %-20s %-20s %s\n", "kernel", "tier", "isa", "bound", "domain");
+    for (int i = 0; i < sc_batch_count; i++) {
+        const sc_batch_entry *e = &sc_batch_table[i];
+        if (e->isa != SC_ISA_SCALAR)
+            continue;
+        char isas[64], bound[48];
+        isa_list(e, isas, sizeof isas);
+        bound_text(e, bound, sizeof bound);
+        if (format == BENCH_CSV)
+            fprintf(out, "%s,%s,\"%s\",%s,\"%s\"\n", e->kernel, e->tier, isas, bound, e->domain);
+        else
+            fprintf(out, "%-12s %-9s %-20s %-20s %s\n", e->kernel, e->tier, isas, bound, e->domain);
+    }
+}
+
+static void table_row(FILE *out, const bench_row *r)
+{
+    char bound[32] = "-";
+    if (r->bound_ulp > 0)
+        snprintf(bound, sizeof bound, "%g ulp", r->bound_ulp);
+    else if (r->bound_rel > 0)
+        snprintf(bound, sizeof bound, "2^%d", (int)lround(log2(r->bound_rel)));
+    fprintf(out,
+            "%-11s %-17s %-6s %-8s %8zu %8.3f %8.3f %8.3f %7.1f %6.2f %6.2f %9.3g %7.3f %9.2e %-8s "
+            "%5.0f%% %s\n",
+            r->kernel, r->scene[0] ? r->scene : "-", r->isa, r->tier, r->n, r->ns_per_elem,
+            r->ns_min, r->ns_max, 1e3 / r->ns_per_elem, r->speedup_vs_scalar, r->speedup_vs_libm,
+            r->err.max_ulp, r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0,
+            r->err.max_rel, bound, 100.0 * r->roofline_fraction, r->pareto ? "*" : "");
+}
+
+static void csv_row(FILE *out, const bench_row *r)
+{
+    fprintf(out, "%s,%s,%s,%s,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", r->kernel,
+            r->scene, r->isa, r->tier, r->n, r->ns_per_elem, r->ns_min, r->ns_max,
+            r->speedup_vs_scalar, r->speedup_vs_libm, r->err.max_ulp,
+            r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0, r->err.max_rel,
+            r->err.max_abs, r->roofline_ns);
+    if (r->bound_ulp > 0)
+        fprintf(out, "%g", r->bound_ulp);
+    fprintf(out, ",%.6g,%d\n", r->roofline_fraction, r->pareto);
+}
+
+static void json_number(FILE *out, const char *key, double v, int comma)
+{
+    if (isfinite(v))
+        fprintf(out, "\"%s\": %.6g%s", key, v, comma ? ", " : "");
+    else
+        fprintf(out, "\"%s\": null%s", key, comma ? ", " : "");
+}
+
+static void json_row(FILE *out, const bench_row *r, int last)
+{
+    fprintf(out, "    {\"kernel\": \"%s\", \"scene\": \"%s\", \"isa\": \"%s\", \"tier\": \"%s\", "
+                 "\"n\": %zu, ",
+            r->kernel, r->scene, r->isa, r->tier, r->n);
+    json_number(out, "ns_per_elem", r->ns_per_elem, 1);
+    json_number(out, "elems_per_s", 1e9 / r->ns_per_elem, 1);
+    json_number(out, "ns_min", r->ns_min, 1);
+    json_number(out, "ns_max", r->ns_max, 1);
+    json_number(out, "speedup_vs_scalar", r->speedup_vs_scalar, 1);
+    json_number(out, "speedup_vs_libm_loop", r->speedup_vs_libm, 1);
+    json_number(out, "max_ulp", r->err.max_ulp, 1);
+    json_number(out, "mean_ulp", r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0, 1);
+    json_number(out, "max_rel", r->err.max_rel, 1);
+    json_number(out, "max_abs", r->err.max_abs, 1);
+    if (r->bound_ulp > 0)
+        json_number(out, "bound_ulp", r->bound_ulp, 1);
+    else
+        fprintf(out, "\"bound_ulp\": null, ");
+    json_number(out, "bound_rel", r->bound_rel, 1);
+    json_number(out, "roofline_ns", r->roofline_ns, 1);
+    json_number(out, "roofline_fraction", r->roofline_fraction, 1);
+    fprintf(out, "\"pareto\": %s}%s\n", r->pareto ? "true" : "false", last ? "" : ",");
+}
+
+void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n)
+{
+    if (format == BENCH_JSON) {
+        fprintf(out, "{\n  \"machine\": {\"cpu\": \"%s\", \"stream_bandwidth_gb_s\": %.3g, "
+                     "\"scalar_fp_ops_per_ns\": %.3g},\n  \"rows\": [\n",
+                m->cpu, m->bandwidth, m->scalar_ops_ns);
+        for (int i = 0; i < n; i++)
+            json_row(out, &rows[i], i == n - 1);
+        fprintf(out, "  ]\n}\n");
+        return;
+    }
+    if (format == BENCH_CSV) {
+        fprintf(out, "kernel,scene,isa,tier,n,ns_per_elem,ns_min,ns_max,speedup_vs_scalar,"
+                     "speedup_vs_libm_loop,max_ulp,mean_ulp,max_rel,max_abs,roofline_ns,bound_ulp,"
+                     "roofline_fraction,pareto\n");
+        for (int i = 0; i < n; i++)
+            csv_row(out, &rows[i]);
+        return;
+    }
+    fprintf(out, "# %s; stream bandwidth %.3g GB/s; scalar FP %.3g ops/ns (x4 SSE4.1, x8 AVX2)\n",
+            m->cpu, m->bandwidth, m->scalar_ops_ns);
+    fprintf(out, "%-11s %-17s %-6s %-8s %8s %8s %8s %8s %7s %6s %6s %9s %7s %9s %-8s %6s %s\n",
+            "kernel", "scene", "isa", "tier", "n", "ns/elem", "min", "max", "Melem/s", "xscal",
+            "xlibm", "max_ulp", "mean", "max_rel", "bound", "roof", "pareto");
+    for (int i = 0; i < n; i++)
+        table_row(out, &rows[i]);
+}

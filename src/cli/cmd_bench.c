@@ -1,0 +1,207 @@
+/* shadecalc bench — speed against accuracy of every batch kernel × instruction set × tier,
+ * measured in one run on the same inputs (bench/). */
+#include <getopt.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bench/bench.h"
+#include "cli/cli.h"
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: shadecalc bench [KERNEL...] [OPTIONS]\n"
+            "\n"
+            "Times each batch kernel (shadecalc bench --list) on every instruction set and tier\n"
+            "on the same inputs: ns/element (median of K repeats after a warm-up, min, max) at\n"
+            "an in-cache and a streaming size; speedups against the scalar accurate kernel and\n"
+            "the plain libm loop; accuracy against the double reference (max and mean ULP, max\n"
+            "relative error); the fraction of the roofline bound reached; the Pareto set (*).\n"
+            "'shade' runs with several scenes: each pays only for the terms it names.\n"
+            "\n"
+            "  -l, --list          the table of kernels, tiers, bounds and domains\n"
+            "  -i, --isa LIST      instruction sets, e.g. avx2,scalar (default: all supported)\n"
+            "  -t, --tier LIST     tiers, e.g. u1,bits12 (default: all)\n"
+            "  -n, --n LIST        element counts (default 4096,4194304: in cache, streaming)\n"
+            "  -r, --repeat K      timed repeats per row, 1..64 (default 7)\n"
+            "  -f, --format F      table|csv|json (default table)\n"
+            "  -h, --help          this help\n"
+            "The scalar accurate kernel and the libm loop are always measured (the baselines).\n");
+}
+
+typedef struct {
+    bench_options run;
+    int format, list;
+} options;
+
+/* Splits a comma list in place into out[]; returns the count, or -1 if more than max. */
+static int split(char *s, const char **out, int max)
+{
+    int n = 0;
+    for (char *tok = strtok(s, ","); tok; tok = strtok(NULL, ",")) {
+        if (n == max)
+            return -1;
+        out[n++] = tok;
+    }
+    return n;
+}
+
+static int parse_isas(char *s, options *o)
+{
+    const char *names[SC_ISA_COUNT + 1];
+    int n = split(s, names, SC_ISA_COUNT);
+    for (int i = 0; i < n; i++) {
+        sc_isa isa;
+        if (sc_isa_parse(names[i], &isa) != 0) {
+            sc_error("bench: --isa: unknown instruction set '%s' (scalar, sse4.1, avx2)", names[i]);
+            return SC_EXIT_USAGE;
+        }
+        if (!sc_isa_supported(isa)) {
+            sc_error("bench: --isa: %s is not supported by this CPU or build", names[i]);
+            return SC_EXIT_USAGE;
+        }
+        o->run.isa_mask |= 1 << isa;
+    }
+    if (n <= 0) {
+        sc_error("bench: --isa: expected a list such as avx2,scalar");
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}
+
+static int known_tier(const char *tier)
+{
+    for (int i = 0; i < sc_batch_count; i++)
+        if (strcmp(sc_batch_table[i].tier, tier) == 0)
+            return 1;
+    return 0;
+}
+
+static int parse_tiers(char *s, options *o)
+{
+    o->run.n_tiers = split(s, o->run.tiers, 16);
+    for (int i = 0; i < o->run.n_tiers; i++)
+        if (!known_tier(o->run.tiers[i])) {
+            sc_error("bench: --tier: unknown tier '%s' (see 'shadecalc bench --list')", o->run.tiers[i]);
+            return SC_EXIT_USAGE;
+        }
+    if (o->run.n_tiers <= 0) {
+        sc_error("bench: --tier: expected a list such as u1,bits12");
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}
+
+static int parse_sizes(char *s, options *o)
+{
+    const char *items[4];
+    int n = split(s, items, 4);
+    for (int i = 0; i < n; i++) {
+        long v;
+        if (sc_parse_long(items[i], &v) != 0 || v < 1 || v > (1L << 28)) {
+            sc_error("bench: --n %s: expected element counts 1..268435456", items[i]);
+            return SC_EXIT_USAGE;
+        }
+        o->run.sizes[i] = (size_t)v;
+    }
+    if (n <= 0) {
+        sc_error("bench: --n: expected at most 4 counts, such as 4096,4194304");
+        return SC_EXIT_USAGE;
+    }
+    o->run.n_sizes = n;
+    return SC_EXIT_OK;
+}
+
+static int parse_format(const char *s, options *o)
+{
+    static const char *const names[] = {"table", "csv", "json"};
+    for (int i = 0; i < 3; i++)
+        if (strcmp(s, names[i]) == 0) {
+            o->format = i;
+            return SC_EXIT_OK;
+        }
+    sc_error("bench: unknown format '%s' (table, csv, json)", s);
+    return SC_EXIT_USAGE;
+}
+
+static int known_kernel(const char *kernel)
+{
+    for (int i = 0; i < sc_batch_count; i++)
+        if (strcmp(sc_batch_table[i].kernel, kernel) == 0)
+            return 1;
+    return 0;
+}
+
+static int parse_kernels(int argc, char **argv, options *o)
+{
+    for (int i = optind; i < argc; i++) {
+        if (!known_kernel(argv[i])) {
+            sc_error("bench: unknown kernel '%s' (see 'shadecalc bench --list')", argv[i]);
+            return SC_EXIT_USAGE;
+        }
+        if (o->run.n_kernels == 32) {
+            sc_error("bench: too many kernels");
+            return SC_EXIT_USAGE;
+        }
+        o->run.kernels[o->run.n_kernels++] = argv[i];
+    }
+    return SC_EXIT_OK;
+}
+
+static int parse_options(int argc, char **argv, options *o)
+{
+    static const struct option longs[] = {
+        {"list", no_argument, NULL, 'l'},       {"isa", required_argument, NULL, 'i'},
+        {"tier", required_argument, NULL, 't'}, {"n", required_argument, NULL, 'n'},
+        {"repeat", required_argument, NULL, 'r'}, {"format", required_argument, NULL, 'f'},
+        {"help", no_argument, NULL, 'h'},       {NULL, 0, NULL, 0}};
+    int c, status = SC_EXIT_OK;
+    long repeat;
+    sc_getopt_reset();
+    while (status == SC_EXIT_OK && (c = getopt_long(argc, argv, "li:t:n:r:f:h", longs, NULL)) != -1) {
+        switch (c) {
+        case 'l': o->list = 1; break;
+        case 'i': status = parse_isas(optarg, o); break;
+        case 't': status = parse_tiers(optarg, o); break;
+        case 'n': status = parse_sizes(optarg, o); break;
+        case 'r':
+            if (sc_parse_long(optarg, &repeat) != 0 || repeat < 1 || repeat > 64) {
+                sc_error("bench: --repeat %s: expected an integer 1..64", optarg);
+                status = SC_EXIT_USAGE;
+            }
+            o->run.repeat = (int)repeat;
+            break;
+        case 'f': status = parse_format(optarg, o); break;
+        case 'h': usage(stdout); return -1;
+        default: return sc_usage_error("bench", argv, optopt);
+        }
+    }
+    return status == SC_EXIT_OK ? parse_kernels(argc, argv, o) : status;
+}
+
+static int run(int argc, char **argv)
+{
+    options o = {{{0}, 0, 0, {0}, 0, {4096, 4194304}, 2, 7, 0}, 0, 0};
+    int status = parse_options(argc, argv, &o);
+    if (status != SC_EXIT_OK)
+        return status < 0 ? SC_EXIT_OK : status;
+    if (o.list) {
+        bench_list(stdout, o.format);
+        return SC_EXIT_OK;
+    }
+    o.run.progress = isatty(STDERR_FILENO);
+    bench_machine m;
+    bench_machine_measure(&m);
+    bench_row *rows;
+    int n;
+    if (bench_run(&o.run, &m, &rows, &n) != 0) {
+        sc_error("bench: out of memory");
+        return SC_EXIT_RUNTIME;
+    }
+    bench_report(stdout, o.format, &m, rows, n);
+    free(rows);
+    return SC_EXIT_OK;
+}
+
+const sc_command sc_cmd_bench = {"bench", "speed against accuracy of the batch kernels", run};
