@@ -85,7 +85,8 @@ typedef struct {
  * by multilinearity in the columns). At a kink (abs, min, max, clamp, mod, fract, floor, step,
  * faceforward, refract's total reflection) the derivative is that of the branch the value took;
  * where the derivative is infinite (sqrt at 0, asin at ±1) it is ±Inf or NaN, as the formula
- * says. No domain callback: evaluate with sc_expr_eval to hear about domain errors. */
+ * says. No domain callback: evaluate with sc_expr_eval to hear about domain errors. NaN values
+ * and derivatives if out of memory. Thread-safe: e is not modified. */
 sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs);
 
 #endif

@@ -5,6 +5,7 @@
  * transpose) apply themselves to the tangents; bilinear ones (*, dot, cross, outerProduct,
  * matrixCompMult) follow the product rule d(a∘b) = da∘b + a∘db; the rest have explicit rules. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "expr/expr_internal.h"
@@ -15,6 +16,8 @@ typedef struct {
     const sc_expr *e;
     const sc_dual_value *inputs;
     sc_dual_value slots[SC_EXPR_MAX_STATEMENTS];
+    sc_dual_value *stack; /* the children's values of the nodes being evaluated */
+    int top;
 } dual_state;
 
 static sc_value zero_of(sc_type t)
@@ -518,28 +521,57 @@ static sc_dual_value dual_select(const expr_node *n, const sc_dual_value *base)
     return out;
 }
 
-static sc_dual_value dual_node(dual_state *st, int index)
+/* One node from its children's values. Kept out of dual_node (which recurses, as deep as a
+ * chain of `+` is long) so that its temporaries are not part of every recursive frame. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void
+apply(const dual_state *st, const expr_node *n, const sc_dual_value *args, sc_dual_value *out)
 {
-    const expr_node *n = &st->e->nodes[index];
-    sc_dual_value args[16];
-    for (int i = 0; i < n->count; i++)
-        args[i] = dual_node(st, st->e->kids[n->first + i]);
     switch (n->kind) {
-    case NODE_NUMBER: return constant((sc_value){SC_FLOAT, {n->num}});
-    case NODE_INPUT: return st->inputs[n->op];
-    case NODE_SLOT: return st->slots[n->op];
-    case NODE_NEGATE: return negate(&args[0]);
-    case NODE_BINARY: return dual_binary(n->op, n->type, &args[0], &args[1]);
-    case NODE_CALL: return dual_builtin(n->op, args, n->count);
-    case NODE_CONSTRUCT: return dual_construct(n->type, args, n->count);
-    default: return dual_select(n, &args[0]);
+    case NODE_NUMBER: *out = constant((sc_value){SC_FLOAT, {n->num}}); break;
+    case NODE_INPUT: *out = st->inputs[n->op]; break;
+    case NODE_SLOT: *out = st->slots[n->op]; break;
+    case NODE_NEGATE: *out = negate(&args[0]); break;
+    case NODE_BINARY: *out = dual_binary(n->op, n->type, &args[0], &args[1]); break;
+    case NODE_CALL: *out = dual_builtin(n->op, args, n->count); break;
+    case NODE_CONSTRUCT: *out = dual_construct(n->type, args, n->count); break;
+    default: *out = dual_select(n, &args[0]); break;
     }
 }
 
+/* The children's values live on st->stack (one slot per child on the path from the root), so
+ * a recursive frame holds a few pointers only. */
+static void dual_node(dual_state *st, int index, sc_dual_value *out)
+{
+    const expr_node *n = &st->e->nodes[index];
+    sc_dual_value *args = st->stack + st->top;
+    st->top += n->count;
+    for (int i = 0; i < n->count; i++)
+        dual_node(st, st->e->kids[n->first + i], &args[i]);
+    apply(st, n, args, out);
+    st->top -= n->count;
+}
+
+/* The value of e with its derivatives; NaN values and derivatives if out of memory. */
 sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs)
 {
-    dual_state st = {.e = e, .inputs = inputs};
+    dual_state *st = calloc(1, sizeof *st);
+    sc_dual_value out;
+    if (st)
+        st->stack = malloc(sizeof(sc_dual_value) * ((size_t)e->n_kids + 1));
+    if (st == NULL || st->stack == NULL) {
+        free(st);
+        sc_value nan = scaled(&(sc_value){sc_expr_result_type(e), {0}}, NAN);
+        return (sc_dual_value){nan, {nan, nan}};
+    }
+    st->e = e;
+    st->inputs = inputs;
     for (int i = 0; i < e->n_stmts; i++)
-        st.slots[e->stmts[i].slot] = dual_node(&st, e->stmts[i].root);
-    return dual_node(&st, e->root);
+        dual_node(st, e->stmts[i].root, &st->slots[e->stmts[i].slot]);
+    dual_node(st, e->root, &out);
+    free(st->stack);
+    free(st);
+    return out;
 }

@@ -374,6 +374,24 @@ static void kinks_take_the_branch_of_the_value(void **state)
     }
 }
 
+/* A left-deep chain u + u + ... as long as the parser allows: its depth is the number of terms,
+ * and the walk must not run out of stack (d/du = the number of terms). */
+static void long_chains_are_differentiated_without_exhausting_the_stack(void **state)
+{
+    (void)state;
+    enum { TERMS = 20000 };
+    static char src[2 * TERMS];
+    src[0] = 'u';
+    for (int i = 1; i < TERMS; i++)
+        memcpy(&src[2 * i - 1], "+u", 2);
+    src[2 * TERMS - 1] = '\0';
+    sc_expr *e = compile_u(src);
+    sc_dual_value in = {{SC_FLOAT, {0.5}}, {{SC_FLOAT, {1.0}}, {SC_FLOAT, {0.0}}}};
+    sc_dual_value out = sc_expr_eval_dual(e, &in); /* not sc_expr_eval: its frames are larger */
+    assert_true(out.x.v[0] == TERMS / 2.0 && out.d[0].v[0] == TERMS);
+    sc_expr_free(e);
+}
+
 /* ---- the spec parser ---- */
 
 static void bad_specs_are_rejected_with_the_offending_word(void **state)
@@ -435,6 +453,7 @@ int main(void)
         cmocka_unit_test(ad_matches_derivatives_by_hand),
         cmocka_unit_test(ad_matches_central_differences_within_their_bound),
         cmocka_unit_test(kinks_take_the_branch_of_the_value),
+        cmocka_unit_test(long_chains_are_differentiated_without_exhausting_the_stack),
         cmocka_unit_test(bad_specs_are_rejected_with_the_offending_word),
         cmocka_unit_test(defaults_and_closedness_of_the_built_ins),
     };
