@@ -1,0 +1,53 @@
+# shadecalc bench: the table listing, the JSON and CSV reports of a small run, errors.
+. tests/e2e/lib.sh
+
+expect "help"          0 '~usage: shadecalc bench' '' -- bench --help
+expect "list pow"      0 '~pow          u1        scalar' '' -- bench --list
+expect "list shade"    0 '~shade        bits8' '' -- bench --list
+expect "list csv"      0 '~kernel,tier,isas,bound,domain' '' -- bench --list --format csv
+expect "bad kernel"    2 '' "error: bench: unknown kernel 'powf' (see 'shadecalc bench --list')" -- bench powf
+expect "bad isa"       2 '' "error: bench: --isa: unknown instruction set 'neon' (scalar, sse4.1, avx2)" -- bench --isa neon
+expect "bad tier"      2 '' "error: bench: --tier: unknown tier 'u7' (see 'shadecalc bench --list')" -- bench --tier u7
+expect "bad n"         2 '' "error: bench: --n 0: expected element counts 1..268435456" -- bench --n 0
+expect "bad repeat"    2 '' "error: bench: --repeat 99: expected an integer 1..64" -- bench --repeat 99
+expect "bad format"    2 '' "error: bench: unknown format 'xml' (table, csv, json)" -- bench --format xml
+
+# A small run as JSON, read by a real parser: the fields every row must carry, the baselines
+# always present, accuracy within the stated bounds, speedups consistent with the times.
+check_json() {
+    name=$1; shift
+    if "$SHADECALC" bench "$@" --format json >"$e2e_tmp/b.json" 2>"$e2e_tmp/err" &&
+        python3 - "$e2e_tmp/b.json" <<'PY'
+import json, sys
+doc = json.load(open(sys.argv[1]))
+keys = ["kernel", "isa", "tier", "n", "ns_per_elem", "ns_min", "ns_max", "speedup_vs_scalar",
+        "speedup_vs_libm_loop", "max_ulp", "mean_ulp", "max_rel", "max_abs", "bound_ulp",
+        "roofline_fraction"]
+rows = doc["rows"]
+assert doc["machine"]["cpu"], "machine description"
+assert rows, "no rows"
+for r in rows:
+    for k in keys:
+        assert k in r, (k, r)
+    assert r["ns_min"] <= r["ns_per_elem"] <= r["ns_max"], r
+    if r["bound_ulp"] is not None:
+        assert r["max_ulp"] <= r["bound_ulp"], r
+isas = {r["isa"] for r in rows}
+assert "libm" in isas and "scalar" in isas, isas
+base = [r for r in rows if r["isa"] == "scalar" and r["tier"] == "u1"]
+for r in rows:
+    same = [b for b in base if b["kernel"] == r["kernel"] and b["n"] == r["n"]]
+    if same:
+        want = same[0]["ns_per_elem"] / r["ns_per_elem"]
+        assert abs(r["speedup_vs_scalar"] - want) <= 1e-3 * want, (r, want)
+assert any(r.get("pareto") for r in rows)
+PY
+    then echo "ok   $name"; echo pass >>"$E2E_COUNTS"
+    else echo "FAIL $name: bench $*"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
+    fi
+}
+check_json "json pow"       --n 256 --repeat 3 pow
+check_json "json isa tier"  --n 100 --repeat 1 --isa scalar --tier u1,bits12 exp2 log2
+
+expect "csv header" 0 '~kernel,scene,isa,tier,n,ns_per_elem,ns_min,ns_max,speedup_vs_scalar,speedup_vs_libm_loop,max_ulp,mean_ulp,max_rel,max_abs,roofline_ns,bound_ulp,roofline_fraction,pareto' '' -- bench --n 64 --repeat 1 --format csv sqrt
+expect "shade scenes" 0 '~lambert 1d' '' -- bench --n 64 --repeat 1 --isa scalar --tier accurate shade
