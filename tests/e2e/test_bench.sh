@@ -51,3 +51,10 @@ check_json "json isa tier"  --n 100 --repeat 1 --isa scalar --tier u1,bits12 exp
 
 expect "csv header" 0 '~kernel,scene,isa,tier,n,ns_per_elem,ns_min,ns_max,speedup_vs_scalar,speedup_vs_libm_loop,max_ulp,mean_ulp,max_rel,max_abs,roofline_ns,bound_ulp,roofline_fraction,pareto' '' -- bench --n 64 --repeat 1 --format csv sqrt
 expect "shade scenes" 0 '~lambert 1d' '' -- bench --n 64 --repeat 1 --isa scalar --tier accurate shade
+
+# The man page's tier table is the binary's own table (mk/man-tiers.sh regenerates it).
+if sh mk/man-tiers.sh "$SHADECALC" >"$e2e_tmp/tiers" 2>"$e2e_tmp/err" &&
+    sed -n "/BEGIN tier table/,/END tier table/p" man/shadecalc.1 | sed '1d;$d' | cmp -s - "$e2e_tmp/tiers"
+then echo "ok   man tier table"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL man tier table: run 'sh mk/man-tiers.sh build/shadecalc' into man/shadecalc.1"; echo fail >>"$E2E_COUNTS"
+fi
