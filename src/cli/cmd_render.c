@@ -412,24 +412,31 @@ static void progress_clear(progress_bar *p)
     p->shown = 0;
 }
 
-static int write_image(const sc_framebuffer *fb, const render_options *o, const char *path,
-                       const char *mode)
+/* Writes img with the command line and one more string attribute in the header. */
+static int write_exr(const render_options *o, const sc_image *img, const char *path,
+                     const char *key, const char *value)
 {
-    sc_image img;
     char err[1024];
     const sc_image_attr attrs[] = {{"shadecalc:command", o->command},
-                                   {"shadecalc:shading", (char *)mode}};
-    if (sc_render_image(fb, o->depth, o->normals, &img) < 0) {
-        sc_error("render: out of memory");
-        return SC_EXIT_RUNTIME;
-    }
-    int bad = sc_exr_write(path, &img, o->exr_type, attrs, 2, err, sizeof err);
-    sc_image_free(&img);
-    if (bad) {
+                                   {(char *)key, (char *)value}};
+    if (sc_exr_write(path, img, o->exr_type, attrs, 2, err, sizeof err) < 0) {
         sc_error("%s", err);
         return SC_EXIT_RUNTIME;
     }
     return SC_EXIT_OK;
+}
+
+static int write_image(const sc_framebuffer *fb, const render_options *o, const char *path,
+                       const char *mode)
+{
+    sc_image img;
+    if (sc_render_image(fb, o->depth, o->normals, &img) < 0) {
+        sc_error("render: out of memory");
+        return SC_EXIT_RUNTIME;
+    }
+    int status = write_exr(o, &img, path, "shadecalc:shading", mode);
+    sc_image_free(&img);
+    return status;
 }
 
 /* Renders and reports the seconds it took (the render only, not tessellation or output). */
@@ -527,22 +534,15 @@ static int write_error_map(const render_options *o, const sc_framebuffer *ref, c
                            const char *path)
 {
     sc_image img;
-    char err[1024];
     const char *names[] = {"Y"};
-    const sc_image_attr attrs[] = {{"shadecalc:command", o->command},
-                                   {"shadecalc:error", "max over R, G, B of |image - exact|"}};
     if (sc_image_init(&img, ref->width, ref->height, 1, names) < 0) {
         sc_error("render: out of memory");
         return SC_EXIT_RUNTIME;
     }
     memcpy(img.data, map, (size_t)ref->width * (size_t)ref->height * sizeof *map);
-    int bad = sc_exr_write(path, &img, o->exr_type, attrs, 2, err, sizeof err);
+    int status = write_exr(o, &img, path, "shadecalc:error", "max over R, G, B of |image - exact|");
     sc_image_free(&img);
-    if (bad) {
-        sc_error("%s", err);
-        return SC_EXIT_RUNTIME;
-    }
-    return SC_EXIT_OK;
+    return status;
 }
 
 /* Writes step k's image (and its error map against ref unless it is the reference). */
