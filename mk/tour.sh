@@ -38,3 +38,9 @@ echo; echo "== Are the models physical? Albedo and reciprocity =="
 step check --theta 0,30,60,85,89.9 --brdf 'blinn-phong diff=0 spec=1 m=8.8' \
     --brdf 'ward form=duer diff=0 spec=1 alpha=0.2' --brdf 'ward form=gmd diff=0 spec=1 alpha=0.2' \
     --brdf 'phong form=original diff=0 spec=1 m=10'
+
+echo; echo "== Gouraud or Phong, how many triangles? Error against the exact sphere (SPEC 8) =="
+compare_dir=$(dirname "$bin")/compare
+mkdir -p "$compare_dir"
+step render --compare --size 256x256 --output-dir "$compare_dir"
+echo "(images and error maps: $compare_dir/*.exr)"
