@@ -52,22 +52,11 @@ static void corner_positions(const sc_mesh *m, int t, double p[3][3])
 /* Facing and geometric normal of mesh triangle t. */
 static void classify_face(render_job *job, int t)
 {
-    double p[3][3];
+    double p[3][3], *n = job->face_n + 3 * t, facing = 0.0;
     corner_positions(job->mesh, t, p);
-    double *n = job->face_n + 3 * t, e1[3], e2[3], to_eye[3], facing = 0.0;
-    for (int c = 0; c < 3; c++) {
-        e1[c] = p[1][c] - p[0][c];
-        e2[c] = p[2][c] - p[0][c];
-        to_eye[c] = job->view.eye[c] - p[0][c];
-    }
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (int c = 0; c < 3; c++) {
-        n[c] = len > 0.0 ? n[c] / len : 0.0;
-        facing += n[c] * to_eye[c];
-    }
+    sc_triangle_normal(p[0], p[1], p[2], n);
+    for (int c = 0; c < 3; c++)
+        facing += n[c] * (job->view.eye[c] - p[0][c]);
     job->front[t] = facing >= 0.0;
 }
 
