@@ -120,6 +120,27 @@ double sc_ulp_error(sc_prec p, double got, double exact)
     return fabs(got - exact) / sc_prec_ulp(p, exact);
 }
 
+/* %.*g with few digits writes 30 as "3e+01" (exponent >= digits); below 10^6 the digits are
+ * written out instead ("30", "150"), as %g does with its six. Returns -1 to keep g as it is. */
+static int plain_integer(char *buf, size_t size, const char *g)
+{
+    const char *e = strchr(g, 'e');
+    int exponent = e ? atoi(e + 1) : -1, digits = 0;
+    if (exponent < 0 || exponent >= 6)
+        return -1;
+    char out[16];
+    size_t n = 0;
+    for (const char *c = g; c < e; c++)
+        if (*c != '.') {
+            out[n++] = *c;
+            digits += *c != '-';
+        }
+    while (digits++ <= exponent)
+        out[n++] = '0';
+    out[n] = '\0';
+    return snprintf(buf, size, "%s", out);
+}
+
 int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
 {
     if (isnan(x))
@@ -134,7 +155,8 @@ int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
         if (sc_round(p, back) == x && (p != SC_LOWP || fabs(back) <= SC_LOWP_MAX + 0x1p-9))
             break;
     }
-    return snprintf(buf, size, "%s", tmp);
+    int plain = plain_integer(buf, size, tmp);
+    return plain >= 0 ? plain : snprintf(buf, size, "%s", tmp);
 }
 
 int sc_format_bits(char *buf, size_t size, double x, sc_prec p)
