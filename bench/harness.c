@@ -55,6 +55,7 @@ typedef struct {
     size_t n, checked;
     sc_batch_scene scene;
     int has_scene;
+    const void *params; /* the kernel's test parameters (batch table) */
 } bench_data;
 
 static void data_free(bench_data *d)
@@ -68,7 +69,7 @@ static void data_free(bench_data *d)
 
 static sc_batch_args data_args(bench_data *d)
 {
-    sc_batch_args a = {{0}, {0}, d->n, d->has_scene ? &d->scene : NULL};
+    sc_batch_args a = {{0}, {0}, d->n, d->has_scene ? &d->scene : NULL, d->params};
     for (int j = 0; j < 9; j++)
         a.in[j] = d->in[j];
     for (int j = 0; j < 3; j++)
@@ -82,6 +83,7 @@ static int data_make(bench_data *d, const sc_batch_entry *domain_of, size_t n, c
     memset(d, 0, sizeof *d);
     d->n = n;
     d->checked = n < ACCURACY_SAMPLE ? n : ACCURACY_SAMPLE;
+    d->params = domain_of->params;
     if (bs) {
         sc_batch_scene_example(bs->brdf, bs->n_dir, bs->n_point, &d->scene);
         d->has_scene = 1;

@@ -89,6 +89,7 @@ typedef struct {
     float *out[3];
     size_t n;
     const sc_batch_scene *scene;
+    const void *params; /* the kernel's parameters, of the type its documentation names */
 } sc_batch_args;
 
 typedef void (*sc_batch_fn)(const sc_batch_args *a);
@@ -114,6 +115,7 @@ typedef struct {
     double lo[2], hi[2];/* random inputs for x and y (one-argument kernels), or: */
     sc_batch_gen_fn gen;/* the generator of vector inputs (NULL for x, y kernels) */
     double ops;         /* arithmetic operations per element, per light for shade */
+    const void *params; /* the parameters the tests and the bench run it with, or NULL */
 } sc_batch_entry;
 
 extern const sc_batch_entry sc_batch_table[];

@@ -5,20 +5,27 @@
 #include <float.h>
 
 #include "batch/reference.h"
+#include "batch/reference_light.h"
+#include "batch/reference_trig.h"
 #include "simd/kernels.h"
 
 /* One row per instruction set: the same kernel, tier, bound and domain. */
-#define ENTRY(k, t, isa_enum, isa, nin, nout, ulp, rel, abs_, dom, lo0, hi0, lo1, hi1, gen, ops)  \
+#define ENTRY_P(k, t, isa_enum, isa, nin, nout, ulp, rel, abs_, dom, lo0, hi0, lo1, hi1, gen, ops,  \
+                params)                                                                           \
     {#k, #t, isa_enum, sc_batch_##k##_##t##_##isa, sc_batch_ref_##k, nin, nout, ulp, rel, abs_,   \
-     dom, {lo0, lo1}, {hi0, hi1}, gen, ops},
+     dom, {lo0, lo1}, {hi0, hi1}, gen, ops, params},
+#define ENTRY(...) ENTRY_P(__VA_ARGS__, NULL)
+/* ROWS: a kernel without parameters; ROWS_P: with the parameters of its tests (last). */
 #ifdef SC_HAVE_X86
-#define ROWS(k, t, ...)                                                                           \
-    ENTRY(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__)                                               \
-    ENTRY(k, t, SC_ISA_SSE41, sse41, __VA_ARGS__)                                                 \
-    ENTRY(k, t, SC_ISA_AVX2, avx2, __VA_ARGS__)
+#define ROWS_WITH(entry, k, t, ...)                                                               \
+    entry(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__)                                               \
+    entry(k, t, SC_ISA_SSE41, sse41, __VA_ARGS__)                                                 \
+    entry(k, t, SC_ISA_AVX2, avx2, __VA_ARGS__)
 #else
-#define ROWS(k, t, ...) ENTRY(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__)
+#define ROWS_WITH(entry, k, t, ...) entry(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__)
 #endif
+#define ROWS(...) ROWS_WITH(ENTRY, __VA_ARGS__)
+#define ROWS_P(...) ROWS_WITH(ENTRY_P, __VA_ARGS__)
 
 #define B22 0x1p-22
 #define B21 0x1p-21
@@ -64,6 +71,8 @@ const sc_batch_entry sc_batch_table[] = {
     ROWS(shade, accurate, 9, 3, 0, 0x1p-16, 0x1p-20, "n, v nonzero, |n.v| >= 2^-6 |n||v|; error relative, plus 2^-20 x scale", VEC(sc_batch_gen_shade), 40)
     ROWS(shade, bits12, 9, 3, 0, B12, B12, "as accurate", VEC(sc_batch_gen_shade), 40)
     ROWS(shade, bits8, 9, 3, 0, B8, B8, "as accurate", VEC(sc_batch_gen_shade), 40)
+#include "batch/rows_trig.h"
+#include "batch/rows_light.h"
 };
 /* clang-format on */
 const int sc_batch_count = (int)(sizeof sc_batch_table / sizeof sc_batch_table[0]);

@@ -3,6 +3,8 @@
 #define SHADECALC_SIMD_KERNELS_H
 
 #include "shadecalc/batch.h"
+#include "simd/kernels_light.h"
+#include "simd/kernels_trig.h"
 
 #if defined(__x86_64__) || defined(__i386__)
 #define SC_HAVE_X86 1
@@ -20,10 +22,11 @@
 #define SC_DECLARE_SCALAR(name) void sc_batch_##name##_scalar(const sc_batch_args *a);
 #define SC_DECLARE_SSE41(name) void sc_batch_##name##_sse41(const sc_batch_args *a);
 #define SC_DECLARE_AVX2(name) void sc_batch_##name##_avx2(const sc_batch_args *a);
-SC_BATCH_KERNELS(SC_DECLARE_SCALAR)
+#define SC_BATCH_ALL_KERNELS(X) SC_BATCH_KERNELS(X) SC_BATCH_KERNELS_TRIG(X) SC_BATCH_KERNELS_LIGHT(X)
+SC_BATCH_ALL_KERNELS(SC_DECLARE_SCALAR)
 #ifdef SC_HAVE_X86
-SC_BATCH_KERNELS(SC_DECLARE_SSE41)
-SC_BATCH_KERNELS(SC_DECLARE_AVX2)
+SC_BATCH_ALL_KERNELS(SC_DECLARE_SSE41)
+SC_BATCH_ALL_KERNELS(SC_DECLARE_AVX2)
 #endif
 
 #endif

@@ -4,6 +4,8 @@
 #include "simd/scalar_vec.h"
 #include "simd/kernels_impl.h"
 #include "simd/shade_impl.h"
+#include "simd/trig_impl.h"
+#include "simd/light_impl.h"
 
 BATCH1(exp2_u1, sc_exp2f)
 BATCH1(exp_u1, sc_expf)

@@ -79,6 +79,7 @@ static void buffers_init(buffers *b, const sc_batch_entry *e, size_t n, const sc
     }
     b->args.n = n;
     b->args.scene = s;
+    b->args.params = e->params;
 }
 
 static void buffers_free(buffers *b)
@@ -291,7 +292,7 @@ static void table_is_complete(void **state)
         assert_non_null(sc_batch_find(e->kernel, e->tier, SC_ISA_SCALAR));
     }
     float x[3] = {1, 2, 3}, out[3];
-    sc_batch_args a = {{x}, {out}, 3, NULL};
+    sc_batch_args a = {{x}, {out}, 3, NULL, NULL};
     assert_int_equal(sc_batch_run("exp2", "u1", &a), 0);
     assert_true(out[2] == 8.0f);
     assert_int_equal(sc_batch_run("exp2", "u7", &a), -1);

@@ -2,3 +2,5 @@
 #include "simd/avx2/vec.h"
 #include "simd/kernels_impl.h"
 #include "simd/shade_impl.h"
+#include "simd/trig_impl.h"
+#include "simd/light_impl.h"

@@ -2,3 +2,5 @@
 #include "simd/sse41/vec.h"
 #include "simd/kernels_impl.h"
 #include "simd/shade_impl.h"
+#include "simd/trig_impl.h"
+#include "simd/light_impl.h"
