@@ -76,13 +76,28 @@ static SC_INLINE vf tier_sqrt(int tier, vf x)
     return tier == ACCURATE ? vf_sqrt(x) : vf_mul(x, tier_rsqrt(tier, x));
 }
 
-/* x^y for x in [2^-126, 1], y >= 1: the specular lobe (no special cases reach it) */
+/* x^y for x in [2^-126, 1], y >= 1: the specular lobe, where no special case can occur, so the
+ * fast tiers skip the selects of pow_bits12/pow_bits8: 2^t, t = y log2 x <= 0, with log2 and
+ * 2^f as in exp2_fast/log2_fast (same polynomials, same bounds) and t floored at −126, where
+ * the result (below 2^-125) counts as 0. */
+static SC_INLINE vf lobe_pow_fast(vf x, vf y, const float *lc, int ln, const float *ec, int en)
+{
+    vi ix = vi_sub(vf_as_vi(x), vi_set1(0x3f3504f3));
+    vf e = vi_to_vf(vi_sra23(ix));
+    vf m = vi_as_vf(vi_add(vi_and(ix, vi_set1(0x007fffff)), vi_set1(0x3f3504f3)));
+    vf u = vf_sub(m, vf_set1(1.0f));
+    vf t = vf_max(vf_mul(y, vf_fma(u, poly(u, lc, ln), e)), vf_set1(-126.0f));
+    vi k = vi_round(t);
+    vf p = poly(vf_sub(t, vi_to_vf(k)), ec, en);
+    return vf_mul(p, vi_as_vf(vi_shl23(vi_add(k, vi_set1(127)))));
+}
+
 static SC_INLINE vf tier_pow(int tier, vf x, vf y)
 {
     if (tier == FAST12)
-        return pow_bits12(x, y);
+        return lobe_pow_fast(x, y, log2_c8, 9, exp2_c3, 4);
     if (tier == FAST8)
-        return pow_bits8(x, y);
+        return lobe_pow_fast(x, y, log2_c4, 5, exp2_c2, 3);
 #ifdef SIMD_HAS_DOUBLE
     return vf_from_vd(pow_half(vd_from_lo(x), vd_from_lo(y)), pow_half(vd_from_hi(x), vd_from_hi(y)));
 #else
