@@ -21,6 +21,10 @@
  *   sc_sweep_format_row       one row as text
  *   sc_sweep_row_max          an upper bound of the length of a formatted row
  *   sc_sweep_run              evaluates every row on N threads, output in row order
+ *   sc_sweep_describe_var     "name=start:stop:count", "... log" or "name=v1,v2,..."
+ *   sc_sweep_image_init       an image of a two-variable sweep (width = first, height = second)
+ *   sc_sweep_image_store      one row's results into its pixel
+ *   sc_sweep_image_write      the image as EXR, with the command line and both ranges
  *
  * Values of the variables are doubles; they print (and substitute) as the shortest decimal that
  * reads back to the same double, and the result columns as the shortest decimal that reads back
@@ -33,6 +37,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "shadecalc/image.h"
 #include "shadecalc/precision.h"
 
 enum { SC_SWEEP_NAME_MAX = 32, SC_SWEEP_MAX_VARS = 8 };
@@ -129,5 +134,23 @@ typedef enum {
 /* Evaluates every row of the grid; rows before a failing one are still written and consumed.
  * The header is the caller's (sc_sweep_write_header). The output does not depend on threads. */
 sc_sweep_status sc_sweep_run(const sc_sweep_job *job, char *err, size_t errsize);
+
+/* ---- images (src/sweep/image.c) ---- */
+
+/* Writes a description of v into buf (lists shortened to about 200 characters). */
+void sc_sweep_describe_var(const sc_sweep_var *v, char *buf, size_t size);
+
+/* Allocates img (shadecalc/image.h) for a grid of exactly two variables: width = the first's
+ * count, height = the second's, row y = 0 (the top) the second variable's first value; channels
+ * Y for one result, R,G for two, R,G,B for three, R,G,B,A for four. 0, or -1 with err. */
+int sc_sweep_image_init(sc_image *img, const sc_sweep_grid *g, int n_results, char *err,
+                        size_t errsize);
+/* Stores the results of `row` (any order) in their pixel, rounded to float. */
+void sc_sweep_image_store(sc_image *img, uint64_t row, const double *results);
+/* Writes img as EXR (ZIP, channels as `type`) with the string attributes shadecalc:command,
+ * shadecalc:x_range and shadecalc:y_range (sc_sweep_describe_var of the two variables),
+ * atomically. 0, or -1 with err "PATH: reason". */
+int sc_sweep_image_write(const char *path, const sc_image *img, sc_pixel_type type,
+                         const sc_sweep_grid *g, const char *command, char *err, size_t errsize);
 
 #endif

@@ -22,35 +22,6 @@ struct sweep_pictures {
     sc_image image;
 };
 
-/* "name=start:stop:count", "... log", or "name=v1,v2,..." (shortened past ~200 characters) */
-static void describe_var(const sc_sweep_var *v, char *buf, size_t size)
-{
-    char a[32], b[32];
-    sc_format_shortest(a, sizeof a, v->start, SC_DOUBLE);
-    sc_format_shortest(b, sizeof b, v->stop, SC_DOUBLE);
-    if (v->spacing != SC_SPACING_LIST) {
-        snprintf(buf, size, "%s=%s:%s:%ld%s", v->name, a, b, v->count,
-                 v->spacing == SC_SPACING_LOG ? " log" : "");
-        return;
-    }
-    size_t n = (size_t)snprintf(buf, size, "%s=", v->name);
-    for (long i = 0; i < v->count && n + 40 < size; i++) {
-        sc_format_shortest(a, sizeof a, v->list[i], SC_DOUBLE);
-        n += (size_t)snprintf(buf + n, size - n, "%s%s", i ? "," : "", a);
-        if (n > 200 && i + 1 < v->count) {
-            snprintf(buf + n, size - n, ",...");
-            return;
-        }
-    }
-}
-
-static int image_channels(int n_results, const char *const **names)
-{
-    static const char *const y[] = {"Y"}, *const rgba[] = {"R", "G", "B", "A"};
-    *names = n_results == 1 ? y : rgba;
-    return n_results <= 4;
-}
-
 static int open_plot(sweep_pictures *p)
 {
     const sc_sweep_grid *g = p->grid;
@@ -67,21 +38,12 @@ static int open_plot(sweep_pictures *p)
 
 static int open_image(sweep_pictures *p)
 {
-    const char *const *names;
-    if (p->grid->n != 2 || !image_channels(p->plan->n_results, &names)) {
-        sc_error("sweep: --image %s: needs exactly two variables (width, height) and at most 4 "
-                 "result columns (this sweep has %d and %d)", p->o.image, p->grid->n,
-                 p->plan->n_results);
+    char err[256];
+    if (sc_sweep_image_init(&p->image, p->grid, p->plan->n_results, err, sizeof err) < 0) {
+        sc_error("sweep: --image %s: %s", p->o.image, err);
         return SC_EXIT_USAGE;
     }
-    if ((double)p->nx * (double)p->ny * p->plan->n_results > (double)SC_EXR_MAX_VALUES ||
-        p->nx > 1 << 20 || p->ny > 1 << 20) {
-        sc_error("sweep: --image %s: %ld x %ld pixels is too large", p->o.image, p->nx, p->ny);
-        return SC_EXIT_USAGE;
-    }
-    return sc_image_init(&p->image, (int)p->nx, (int)p->ny, p->plan->n_results, names) == 0
-               ? SC_EXIT_OK
-               : SC_EXIT_RUNTIME;
+    return SC_EXIT_OK;
 }
 
 int sweep_pictures_open(sweep_pictures **out, const sweep_picture_options *o,
@@ -122,11 +84,8 @@ int sweep_pictures_consume(void *user, uint64_t row, const double *vars, const d
         if (p->grey)
             p->grey = results[0] == results[1] && results[1] == results[2];
     }
-    if (p->image.data) {
-        float *px = sc_image_pixel(&p->image, (int)i, (int)j);
-        for (int c = 0; c < n; c++)
-            px[c] = (float)results[c];
-    }
+    if (p->image.data)
+        sc_sweep_image_store(&p->image, row, results);
     return 0;
 }
 
@@ -195,14 +154,9 @@ static int write_plot(const sweep_pictures *p)
 
 static int write_image(const sweep_pictures *p)
 {
-    char x_range[256], y_range[256], err[512];
-    describe_var(&p->grid->var[0], x_range, sizeof x_range);
-    describe_var(&p->grid->var[1], y_range, sizeof y_range);
-    const sc_image_attr attrs[] = {{"shadecalc:command", (char *)p->o.command},
-                                   {"shadecalc:x_range", x_range},
-                                   {"shadecalc:y_range", y_range}};
-    if (sc_exr_write(p->o.image, &p->image, p->o.exr_half ? SC_PIXEL_HALF : SC_PIXEL_FLOAT,
-                     attrs, 3, err, sizeof err) < 0) {
+    char err[512];
+    if (sc_sweep_image_write(p->o.image, &p->image, p->o.exr_half ? SC_PIXEL_HALF : SC_PIXEL_FLOAT,
+                             p->grid, p->o.command, err, sizeof err) < 0) {
         sc_error("%s", err);
         return SC_EXIT_RUNTIME;
     }

@@ -19,6 +19,8 @@ int sc_plot_ticks(double lo, double hi, int target, double *ticks, int max, doub
     double range = nice_number(hi - lo, 0);
     *step = nice_number(range / (target > 1 ? target : 1), 1);
     double first = floor(lo / *step), last = ceil(hi / *step);
+    first -= first * *step > lo; /* k·step rounded past the end */
+    last += last * *step < hi;
     int n = 0;
     for (double k = first; k <= last && n < max; k++) {
         double t = k * *step;
