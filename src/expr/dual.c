@@ -15,7 +15,7 @@ static const double PI = 3.14159265358979323846, LN2 = 0.69314718055994530942;
 typedef struct {
     const sc_expr *e;
     const sc_dual_value *inputs;
-    sc_dual_value slots[SC_EXPR_MAX_STATEMENTS];
+    sc_dual_value *slots; /* the statements' values */
     sc_dual_value *stack; /* the children's values of the nodes being evaluated */
     int top;
 } dual_state;
@@ -554,24 +554,33 @@ static void dual_node(dual_state *st, int index, sc_dual_value *out)
     st->top -= n->count;
 }
 
-/* The value of e with its derivatives; NaN values and derivatives if out of memory. */
+static int slot_count(const sc_expr *e)
+{
+    int n = 0;
+    for (int i = 0; i < e->n_stmts; i++)
+        n = e->stmts[i].slot >= n ? e->stmts[i].slot + 1 : n;
+    return n;
+}
+
+/* The value of e with its derivatives; NaN values and derivatives if out of memory. Slots and
+ * the children's stack share one buffer: on the C stack for small expressions (the common
+ * case, no allocation), else on the heap. */
 sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs)
 {
-    dual_state *st = calloc(1, sizeof *st);
-    sc_dual_value out;
-    if (st)
-        st->stack = malloc(sizeof(sc_dual_value) * ((size_t)e->n_kids + 1));
-    if (st == NULL || st->stack == NULL) {
-        free(st);
+    enum { LOCAL_VALUES = 24 };
+    sc_dual_value local[LOCAL_VALUES], out;
+    int n_slots = slot_count(e);
+    size_t need = (size_t)n_slots + (size_t)e->n_kids;
+    sc_dual_value *buffer = need <= LOCAL_VALUES ? local : malloc(need * sizeof *buffer);
+    if (buffer == NULL) {
         sc_value nan = scaled(&(sc_value){sc_expr_result_type(e), {0}}, NAN);
         return (sc_dual_value){nan, {nan, nan}};
     }
-    st->e = e;
-    st->inputs = inputs;
+    dual_state st = {e, inputs, buffer, buffer + n_slots, 0};
     for (int i = 0; i < e->n_stmts; i++)
-        dual_node(st, e->stmts[i].root, &st->slots[e->stmts[i].slot]);
-    dual_node(st, e->root, &out);
-    free(st->stack);
-    free(st);
+        dual_node(&st, e->stmts[i].root, &st.slots[e->stmts[i].slot]);
+    dual_node(&st, e->root, &out);
+    if (buffer != local)
+        free(buffer);
     return out;
 }
