@@ -1,7 +1,6 @@
 /* Parametric surfaces and their exact normals (shadecalc/surface.h, SPEC §7): the built-ins in
  * closed form, user surfaces by dual numbers through the expression evaluator. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 
 #include "geom/geom_internal.h"
@@ -18,6 +17,8 @@ static void sincos_turns(double t, double *s, double *c)
         return;
     }
     t -= floor(t);
+    if (t >= 1.0) /* a tiny negative t rounds up to 1: the same as 0 */
+        t = 0.0;
     int quadrant = (int)(4.0 * t);
     double r = TWO_PI * (t - quadrant / 4.0), sr = sin(r), cr = cos(r);
     static const double sin_of[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}}; /* (sr, cr) weights */

@@ -151,6 +151,22 @@ static void torus_example_of_the_issue_is_exact(void **state)
     sc_surface_free(s);
 }
 
+/* Outside [0, 1] the formulas extend periodically in the angles: u = 1.25 is u = 0.25, and a
+ * tiny negative u (whose reduction rounds up to a whole turn) is u = 0. */
+static void parameters_outside_the_square_extend_the_formulas(void **state)
+{
+    (void)state;
+    sc_surface *s = parse("torus");
+    sc_surface_point a, b;
+    sc_surface_eval(s, 1.25, 0.5, &a);
+    sc_surface_eval(s, 0.25, 0.5, &b);
+    assert_memory_equal(a.p, b.p, sizeof a.p);
+    sc_surface_eval(s, -1e-20, 0.5, &a);
+    sc_surface_eval(s, 0.0, 0.5, &b);
+    assert_memory_equal(a.p, b.p, sizeof a.p);
+    sc_surface_free(s);
+}
+
 /* The poles: ∂S/∂u = 0, so degenerate = 1 and n is the limit from inside: (0, 0, −1) at v = 0,
  * (0, 0, 1) at v = 1. The documented step δ = 2⁻³⁰ moves the normal by sin(πδ) <= πδ < 4e-9. */
 static void sphere_poles_give_the_limit_normal(void **state)
@@ -446,6 +462,7 @@ int main(void)
         cmocka_unit_test(cylinder_matches_its_closed_form),
         cmocka_unit_test(plane_is_the_square_facing_z),
         cmocka_unit_test(torus_example_of_the_issue_is_exact),
+        cmocka_unit_test(parameters_outside_the_square_extend_the_formulas),
         cmocka_unit_test(sphere_poles_give_the_limit_normal),
         cmocka_unit_test(surface_without_area_falls_back_to_z),
         cmocka_unit_test(nan_surface_never_gives_a_nan_normal),
