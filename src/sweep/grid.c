@@ -125,8 +125,10 @@ double sc_sweep_var_value(const sc_sweep_var *v, long i)
         return v->start;
     if (i == v->count - 1)
         return v->stop;
-    if (v->spacing == SC_SPACING_LOG)
-        return v->start * pow(v->stop / v->start, (double)i / (double)(v->count - 1));
+    if (v->spacing == SC_SPACING_LOG) { /* evenly in log10, so that decades land exactly */
+        double a = log10(fabs(v->start)), b = log10(fabs(v->stop));
+        return copysign(pow(10.0, a + (b - a) * (double)i / (double)(v->count - 1)), v->start);
+    }
     return v->start + (v->stop - v->start) * (double)i / (double)(v->count - 1);
 }
 
