@@ -44,6 +44,14 @@ ARCH := $(shell uname -m)
 ifneq ($(filter x86_64 amd64 i686 i386,$(ARCH)),)
 $(BUILD)/obj/src/simd/avx2/%.o: ISAFLAGS := -mavx2 -mfma -mf16c
 $(BUILD)/obj/src/simd/sse41/%.o: ISAFLAGS := -msse4.1
+$(BUILD)/obj/bench/sleef_avx2.o: ISAFLAGS := -mavx2 -mfma
+endif
+
+# SLEEF (libsleef-dev) is optional: when found, `shadecalc bench` also times its AVX2 functions.
+SLEEF_LIBS := $(shell pkg-config --libs sleef 2>/dev/null)
+ifneq ($(SLEEF_LIBS),)
+$(BUILD)/obj/bench/sleef_avx2.o: CPPFLAGS += -DSC_HAVE_SLEEF
+BIN_LIBS := $(SLEEF_LIBS)
 endif
 
 LIB_SRCS   := $(sort $(shell find src -name '*.c' ! -path 'src/cli/*'))
@@ -100,7 +108,7 @@ $(SHARED): $(LIB_OBJS)
 	ln -sf $(SONAME) $(BUILD)/libshadecalc.so
 
 $(BIN): $(CLI_OBJS) $(STATIC)
-	$(CC) $(LDALL) -o $@ $(CLI_OBJS) $(STATIC) $(LDLIBS)
+	$(CC) $(LDALL) -o $@ $(CLI_OBJS) $(STATIC) $(BIN_LIBS) $(LDLIBS)
 
 $(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(SUP_OBJS) $(STATIC)
 	@mkdir -p $(dir $@)

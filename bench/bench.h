@@ -13,6 +13,18 @@
 /* The loop for a kernel, with the project's ordinary flags; NULL if none. */
 sc_batch_fn bench_libm_loop(const char *kernel);
 
+/* ---- SLEEF's AVX2 functions (bench/sleef_avx2.c; optional, built when SLEEF is found) ---- */
+
+typedef struct {
+    const char *kernel, *tier; /* "pow", "u10" */
+    sc_batch_fn fn;
+} bench_sleef;
+
+/* 1 if the binary has SLEEF and the CPU runs its AVX2 functions. */
+int bench_sleef_available(void);
+/* The SLEEF loops for a kernel: *out points at the first of the returned count. */
+int bench_sleef_loops(const char *kernel, const bench_sleef **out);
+
 /* ---- the machine (bench/machine.c) ---- */
 
 typedef struct {

@@ -265,6 +265,23 @@ static void measure_libm(bench_state *st, const sc_batch_entry *accurate, bench_
     progress(st, "libm loop");
 }
 
+/* SLEEF's AVX2 functions for the kernel, when the binary has them: comparison rows. */
+static void measure_sleef(bench_state *st, const sc_batch_entry *accurate, bench_data *d)
+{
+    const bench_sleef *loops;
+    int n = bench_sleef_available() ? bench_sleef_loops(accurate->kernel, &loops) : 0;
+    for (int i = 0; i < n; i++) {
+        bench_row *r = add_row(st, accurate->kernel, "sleef-avx2", loops[i].tier, "", d->n);
+        if (!r)
+            return;
+        sc_batch_args a = data_args(d);
+        time_fn(loops[i].fn, &a, st->o->repeat, r);
+        accuracy(accurate, d, r);
+        roofline(st, accurate, d, 8, r);
+        progress(st, "sleef");
+    }
+}
+
 /* Speedups of the rows [first, end) against their scalar accurate and libm rows. */
 static void speedups(bench_row *rows, int first, int end, const char *accurate_tier)
 {
@@ -313,6 +330,7 @@ static int measure_group(bench_state *st, const char *kernel, const bench_scene 
             measure_entry(st, e, &d, scene_name);
     }
     measure_libm(st, accurate, &d, scene_name);
+    measure_sleef(st, accurate, &d);
     speedups(st->rows, first, st->n_rows, accurate->tier);
     pareto(st->rows, first, st->n_rows);
     data_free(&d);
@@ -338,7 +356,8 @@ static int count_rows(const bench_options *o, const char *const *kernels, int n_
 {
     int total = 0;
     for (int k = 0; k < n_kernels; k++) {
-        int per = 1; /* the libm loop */
+        const bench_sleef *sleef;
+        int per = 1 + (bench_sleef_available() ? bench_sleef_loops(kernels[k], &sleef) : 0);
         const sc_batch_entry *accurate = kernel_entry(kernels[k], 0);
         for (int i = 0; i < sc_batch_count; i++) {
             const sc_batch_entry *e = &sc_batch_table[i];

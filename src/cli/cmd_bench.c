@@ -191,6 +191,9 @@ static int run(int argc, char **argv)
         return SC_EXIT_OK;
     }
     o.run.progress = isatty(STDERR_FILENO);
+    if (!bench_sleef_available())
+        fprintf(stderr, "bench: SLEEF not found at build time (or no AVX2 here): no sleef-avx2 "
+                        "comparison rows (install libsleef-dev and rebuild to get them)\n");
     bench_machine m;
     bench_machine_measure(&m);
     bench_row *rows;

@@ -236,48 +236,56 @@ static inline vd vd_pow2i(vd k)
     return vl_as_vd(vl_shl52(vl_add(bits, vl_set1(1023))));
 }
 
-static const double inv_factorial[14] = {1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120,
-                                         1.0 / 720, 1.0 / 5040, 1.0 / 40320, 1.0 / 362880,
-                                         1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600,
-                                         1.0 / 6227020800.0};
+/* 1/n!: 2^f = e^y, y = f ln 2, |y| <= ln2/2, by Taylor to degree 8: the first term dropped,
+ * y^9/9!, is below 2.1e-10 = 2^-32.2, far under the half ULP of binary32 (2^-24). */
+static const double inv_factorial[9] = {1.0,       1.0,       1.0 / 2,    1.0 / 6,     1.0 / 24,
+                                        1.0 / 120, 1.0 / 720, 1.0 / 5040, 1.0 / 40320};
 
-/* src/math/exp.c in double lanes */
+/* 2^x in double: 2^k · e^((x − k) ln 2), k = rint(x), |x| clamped to 1000 */
 static inline vd exp2_d(vd x)
 {
     x = vd_min(vd_max(x, vd_set1(-1000.0)), vd_set1(1000.0));
     vd k = vd_rint(x);
     vd y = vd_mul(vd_sub(x, k), vd_set1(0.6931471805599453094));
-    return vd_mul(vd_horner(y, inv_factorial, 14), vd_pow2i(k));
+    return vd_mul(vd_horner(y, inv_factorial, 9), vd_pow2i(k));
 }
 
-static const double inv_odd[12] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,  1.0 / 11,
-                                   1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21, 1.0 / 23};
+static const double inv_odd[7] = {1.0, 1.0 / 3, 1.0 / 5, 1.0 / 7, 1.0 / 9, 1.0 / 11, 1.0 / 13};
 
-/* src/math/log.c in double lanes, for positive normal x: *e the exponent, returns log(m). */
-static inline vd log_parts_d(vd x, vd *e)
+/* log m for m in [√½, √2): 2 atanh(s), s = (m − 1)/(m + 1), |s| <= 0.1716, by its series
+ * 2s Σ s^2k/(2k+1) to `terms` terms: the first dropped is below 0.0295^terms/(2 terms + 1)
+ * relative (6 terms: 2^-34; 7: 2^-39.5, what pow needs, since y log2 x multiplies it). */
+static inline vd log_m_d(vd m, int terms)
 {
-    vl bits = vd_as_vl(x);
-    vl mant = vl_or(vl_and(bits, vl_set1(0x000fffffffffffffLL)), vl_set1(0x3ff0000000000000LL));
-    vd m = vl_as_vd(mant);
-    /* the biased exponent as a double: its bits under 2^52, minus 2^52 */
-    vd biased = vd_sub(vl_as_vd(vl_or(vl_shr52(bits), vd_as_vl(vd_set1(0x1p52)))), vd_set1(0x1p52));
-    vdm big = vd_lt(vd_set1(1.4142135623730951), m);
-    m = vd_select(big, vd_mul(m, vd_set1(0.5)), m);
-    *e = vd_add(vd_sub(biased, vd_set1(1023.0)), vd_select(big, vd_set1(1.0), vd_set1(0.0)));
     vd s = vd_div(vd_sub(m, vd_set1(1.0)), vd_add(m, vd_set1(1.0)));
-    return vd_mul(vd_mul(vd_set1(2.0), s), vd_horner(vd_mul(s, s), inv_odd, 12));
+    return vd_mul(vd_mul(vd_set1(2.0), s), vd_horner(vd_mul(s, s), inv_odd, terms));
 }
 
-static inline vd log2_d(vd x)
+/* x = m · 2^e with m in [√½, √2), for positive normal x, by integer arithmetic on the float
+ * bits (as log2_fast): both m and e exact in float. */
+static inline void log_split(vf x, vf *m, vf *e)
 {
-    vd e, lm = log_parts_d(x, &e);
-    return vd_fma(lm, vd_set1(1.4426950408889634074), e);
+    vi ix = vi_sub(vf_as_vi(x), vi_set1(0x3f3504f3));
+    *e = vi_to_vf(vi_sra23(ix));
+    *m = vi_as_vf(vi_add(vi_and(ix, vi_set1(0x007fffff)), vi_set1(0x3f3504f3)));
 }
 
-static inline vd log_d(vd x)
+/* log2 x = e + log m / ln 2 on one half (m, e from log_split), with `terms` series terms */
+static inline vd log2_parts_d(vd m, vd e, int terms)
 {
-    vd e, lm = log_parts_d(x, &e);
-    return vd_fma(e, vd_set1(0.6931471805599453094), lm);
+    return vd_fma(log_m_d(m, terms), vd_set1(1.4426950408889634074), e);
+}
+
+static inline vd log2_me_d(vd m, vd e) { return log2_parts_d(m, e, 6); }
+static inline vd log_me_d(vd m, vd e)
+{
+    return vd_fma(e, vd_set1(0.6931471805599453094), log_m_d(m, 6));
+}
+
+/* A two-argument double kernel on the low and high halves, rounded back to float. */
+static inline vf on_doubles2(vf a, vf b, vd (*f)(vd, vd))
+{
+    return vf_from_vd(f(vd_from_lo(a), vd_from_lo(b)), f(vd_from_hi(a), vd_from_hi(b)));
 }
 
 /* x not a positive normal float, or +Inf */
@@ -293,21 +301,34 @@ static inline vf exp2_u1(vf x) { return fixup1(vf_isnan(x), x, on_doubles(x, exp
 static inline vf exp_u1(vf x) { return fixup1(vf_isnan(x), x, on_doubles(x, exp_d), sc_expf); }
 static inline vf log2_u1(vf x)
 {
-    return fixup1(not_positive_finite(x), x, on_doubles(x, log2_d), sc_log2f);
+    vf m, e;
+    log_split(x, &m, &e);
+    return fixup1(not_positive_finite(x), x, on_doubles2(m, e, log2_me_d), sc_log2f);
 }
 static inline vf log_u1(vf x)
 {
-    return fixup1(not_positive_finite(x), x, on_doubles(x, log_d), sc_logf);
+    vf m, e;
+    log_split(x, &m, &e);
+    return fixup1(not_positive_finite(x), x, on_doubles2(m, e, log_me_d), sc_logf);
 }
 static inline vf inversesqrt_u1(vf x) { return on_doubles(x, rsqrt_d); }
 
-/* 2^(y log2 x) on one half; the special cases of src/math/pow.c (x <= 0, x = 1, infinities,
- * NaN, y = 0) go to the scalar built-in. */
-static inline vd pow_half(vd x, vd y) { return exp2_d(vd_mul(y, log2_d(x))); }
+/* 2^(y log2 x) on one half, x = m 2^e (log_split); the special cases of src/math/pow.c
+ * (x <= 0, x = 1, infinities, NaN, y = 0) go to the scalar built-in. */
+static inline vd pow_half(vd m, vd e, vd y) { return exp2_d(vd_mul(y, log2_parts_d(m, e, 7))); }
+
+/* x^y for positive normal x, in double lanes, rounded once */
+static inline vf pow_d(vf x, vf y)
+{
+    vf m, e;
+    log_split(x, &m, &e);
+    return vf_from_vd(pow_half(vd_from_lo(m), vd_from_lo(e), vd_from_lo(y)),
+                      pow_half(vd_from_hi(m), vd_from_hi(e), vd_from_hi(y)));
+}
 
 static inline vf pow_u1(vf x, vf y)
 {
-    vf r = vf_from_vd(pow_half(vd_from_lo(x), vd_from_lo(y)), pow_half(vd_from_hi(x), vd_from_hi(y)));
+    vf r = pow_d(x, y);
     vf abs_y = vf_max(y, vf_sub(vf_set1(0.0f), y));
     vm special = vm_or(not_positive_finite(x), vm_or(vf_eq(y, vf_set1(0.0f)), vf_isnan(y)));
     special = vm_or(special, vm_or(vf_eq(abs_y, vf_set1(INFINITY)), vf_eq(x, vf_set1(1.0f))));

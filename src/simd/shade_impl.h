@@ -99,7 +99,7 @@ static SC_INLINE vf tier_pow(int tier, vf x, vf y)
     if (tier == FAST8)
         return lobe_pow_fast(x, y, log2_c4, 5, exp2_c2, 3);
 #ifdef SIMD_HAS_DOUBLE
-    return vf_from_vd(pow_half(vd_from_lo(x), vd_from_lo(y)), pow_half(vd_from_hi(x), vd_from_hi(y)));
+    return pow_d(x, y);
 #else
     return sc_powf(x, y);
 #endif
