@@ -52,7 +52,8 @@ typedef struct {
 int sc_image_init(sc_image *img, int width, int height, int n_channels, const char *const *names);
 void sc_image_free(sc_image *img);
 
-static inline float *sc_image_pixel(const sc_image *img, int x, int y) {
+static inline float *sc_image_pixel(const sc_image *img, int x, int y)
+{
     return img->data + ((size_t)y * (size_t)img->width + (size_t)x) * (size_t)img->n_channels;
 }
 

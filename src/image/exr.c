@@ -40,7 +40,8 @@ static int fail(exr_stream *s, const char *fmt, ...)
     ;
 
 /* Records a reason (only the first one: later ones are consequences) and returns -1. */
-static int fail(exr_stream *s, const char *fmt, ...) {
+static int fail(exr_stream *s, const char *fmt, ...)
+{
     if (!s->message[0]) {
         va_list ap;
         va_start(ap, fmt);
@@ -51,19 +52,27 @@ static int fail(exr_stream *s, const char *fmt, ...) {
 }
 
 /* 0 for EXR_ERR_SUCCESS; otherwise records the library's generic message for the code. */
-static int check(exr_stream *s, exr_result_t r) {
+static int check(exr_stream *s, exr_result_t r)
+{
     return r == EXR_ERR_SUCCESS ? 0 : fail(s, "%s", exr_get_default_error_message(r));
 }
 
-static void keep_first_error(exr_const_context_t ctxt, exr_result_t code, const char *msg) {
-    void *user = NULL;
-    if (exr_get_user_data(ctxt, &user) == EXR_ERR_SUCCESS && user)
-        fail(user, "%s", msg ? msg : exr_get_default_error_message(code));
+/* The stream of the operation running on this thread. OpenEXR calls the error handler with the
+ * context locked, so the handler cannot ask the context for its user data (exr_get_user_data
+ * takes the same lock). */
+static _Thread_local exr_stream *reporting_to;
+
+static void keep_first_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+{
+    (void)ctxt;
+    if (reporting_to)
+        fail(reporting_to, "%s", msg ? msg : exr_get_default_error_message(code));
 }
 
 /* pwrite() into the growing buffer. */
 static int64_t stream_write(exr_const_context_t ctxt, void *user, const void *buffer, uint64_t sz,
-                            uint64_t offset, exr_stream_error_func_ptr_t error_cb) {
+                            uint64_t offset, exr_stream_error_func_ptr_t error_cb)
+{
     exr_stream *s = user;
     if (offset > SIZE_MAX / 2 || sz > SIZE_MAX / 2 - offset)
         return error_cb(ctxt, EXR_ERR_WRITE_IO, "write beyond the address space"), -1;
@@ -71,35 +80,41 @@ static int64_t stream_write(exr_const_context_t ctxt, void *user, const void *bu
     if (end > s->capacity) {
         size_t capacity = end > 2 * s->capacity ? end : 2 * s->capacity;
         unsigned char *grown = realloc(s->data, capacity);
-        if (!grown) return error_cb(ctxt, EXR_ERR_OUT_OF_MEMORY, "out of memory"), -1;
+        if (!grown)
+            return error_cb(ctxt, EXR_ERR_OUT_OF_MEMORY, "out of memory"), -1;
         s->data = grown;
         s->capacity = capacity;
     }
     if (offset > s->size) /* a gap the library will fill later: keep it defined */
         memset(s->data + s->size, 0, (size_t)offset - s->size);
     memcpy(s->data + offset, buffer, (size_t)sz);
-    if (end > s->size) s->size = end;
+    if (end > s->size)
+        s->size = end;
     return (int64_t)sz;
 }
 
 /* pread() from the buffer: short at the end, 0 past it. */
 static int64_t stream_read(exr_const_context_t ctxt, void *user, void *buffer, uint64_t sz,
-                           uint64_t offset, exr_stream_error_func_ptr_t error_cb) {
+                           uint64_t offset, exr_stream_error_func_ptr_t error_cb)
+{
     (void)ctxt;
     (void)error_cb;
     const exr_stream *s = user;
-    if (offset >= s->size) return 0;
+    if (offset >= s->size)
+        return 0;
     size_t n = sz < s->size - offset ? (size_t)sz : s->size - (size_t)offset;
     memcpy(buffer, s->data + offset, n);
     return (int64_t)n;
 }
 
-static int64_t stream_size(exr_const_context_t ctxt, void *user) {
+static int64_t stream_size(exr_const_context_t ctxt, void *user)
+{
     (void)ctxt;
     return (int64_t)((const exr_stream *)user)->size;
 }
 
-static exr_context_initializer_t stream_initializer(exr_stream *s) {
+static exr_context_initializer_t stream_initializer(exr_stream *s)
+{
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.user_data = s;
     init.error_handler_fn = keep_first_error;
@@ -109,7 +124,8 @@ static exr_context_initializer_t stream_initializer(exr_stream *s) {
     return init;
 }
 
-static void report(char *err, size_t errsize, const char *path, const char *reason) {
+static void report(char *err, size_t errsize, const char *path, const char *reason)
+{
     if (err && errsize)
         snprintf(err, errsize, "%s: %s", path, reason[0] ? reason : "unknown OpenEXR error");
 }
@@ -117,7 +133,8 @@ static void report(char *err, size_t errsize, const char *path, const char *reas
 /* ---- writing ----------------------------------------------------------------------------------
  */
 
-static int check_image(exr_stream *s, const sc_image *img) {
+static int check_image(exr_stream *s, const sc_image *img)
+{
     if (!img || !img->data || img->width < 1 || img->height < 1 || img->n_channels < 1 ||
         img->n_channels > SC_IMAGE_MAX_CHANNELS)
         return fail(s, "not a valid image");
@@ -126,8 +143,10 @@ static int check_image(exr_stream *s, const sc_image *img) {
     return 0;
 }
 
-static int check_attrs(exr_stream *s, const sc_image_attr *attrs, int n_attrs) {
-    if (n_attrs < 0 || (n_attrs > 0 && !attrs)) return fail(s, "invalid attribute list");
+static int check_attrs(exr_stream *s, const sc_image_attr *attrs, int n_attrs)
+{
+    if (n_attrs < 0 || (n_attrs > 0 && !attrs))
+        return fail(s, "invalid attribute list");
     for (int i = 0; i < n_attrs; i++) {
         const char *name = attrs[i].name;
         if (!name || !name[0] || !attrs[i].value)
@@ -141,24 +160,29 @@ static int check_attrs(exr_stream *s, const sc_image_attr *attrs, int n_attrs) {
     return 0;
 }
 
-static int needs_long_names(const sc_image *img, const sc_image_attr *attrs, int n_attrs) {
+static int needs_long_names(const sc_image *img, const sc_image_attr *attrs, int n_attrs)
+{
     for (int c = 0; c < img->n_channels; c++)
-        if (strlen(img->channel[c]) > EXR_SHORT_NAME_MAX) return 1;
+        if (strlen(img->channel[c]) > EXR_SHORT_NAME_MAX)
+            return 1;
     for (int i = 0; i < n_attrs; i++)
-        if (strlen(attrs[i].name) > EXR_SHORT_NAME_MAX) return 1;
+        if (strlen(attrs[i].name) > EXR_SHORT_NAME_MAX)
+            return 1;
     return 0;
 }
 
 /* One scanline part: required attributes, ZIP, the channels, the channel order, the caller's
  * string attributes; then the header is written. */
 static exr_result_t define_header(exr_context_t ctx, const sc_image *img, exr_pixel_type_t type,
-                                  const sc_image_attr *attrs, int n_attrs) {
+                                  const sc_image_attr *attrs, int n_attrs)
+{
     int part = 0;
     exr_result_t r = exr_add_part(ctx, NULL, EXR_STORAGE_SCANLINE, &part);
     if (!r)
         r = exr_initialize_required_attr_simple(ctx, part, img->width, img->height,
                                                 EXR_COMPRESSION_ZIP);
-    if (!r && needs_long_names(img, attrs, n_attrs)) r = exr_set_longname_support(ctx, 1);
+    if (!r && needs_long_names(img, attrs, n_attrs))
+        r = exr_set_longname_support(ctx, 1);
     for (int c = 0; !r && c < img->n_channels; c++)
         r = exr_add_channel(ctx, part, img->channel[c], type, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
     if (!r)
@@ -172,7 +196,8 @@ static exr_result_t define_header(exr_context_t ctx, const sc_image *img, exr_pi
 /* Points every channel of the encoder at its column of interleaved rows of elem_size values
  * (rows: the chunk's first row, width × n_channels values per row). */
 static void point_encoder_at(exr_encode_pipeline_t *enc, const sc_image *img,
-                             const unsigned char *rows, int elem_size) {
+                             const unsigned char *rows, int elem_size)
+{
     for (int i = 0; i < enc->channel_count; i++) {
         exr_coding_channel_info_t *ch = &enc->channels[i];
         int c = sc_image_channel_index(img, ch->channel_name);
@@ -185,7 +210,8 @@ static void point_encoder_at(exr_encode_pipeline_t *enc, const sc_image *img,
 }
 
 /* Rows [y, y + rows) rounded to binary16, in the image's interleaved layout. */
-static void round_rows_to_half(const sc_image *img, int y, int rows, uint16_t *out) {
+static void round_rows_to_half(const sc_image *img, int y, int rows, uint16_t *out)
+{
     size_t per_row = (size_t)img->width * (size_t)img->n_channels;
     const float *in = img->data + (size_t)y * per_row;
     for (size_t i = 0; i < (size_t)rows * per_row; i++)
@@ -193,13 +219,15 @@ static void round_rows_to_half(const sc_image *img, int y, int rows, uint16_t *o
 }
 
 static exr_result_t encode_chunk(exr_context_t ctx, exr_encode_pipeline_t *enc, int *started,
-                                 const sc_image *img, int y, uint16_t *half_rows) {
+                                 const sc_image *img, int y, uint16_t *half_rows)
+{
     exr_chunk_info_t chunk;
     exr_result_t r = exr_write_scanline_chunk_info(ctx, 0, y, &chunk);
     if (!r)
         r = *started ? exr_encoding_update(ctx, 0, &chunk, enc)
                      : exr_encoding_initialize(ctx, 0, &chunk, enc);
-    if (r) return r;
+    if (r)
+        return r;
     *started = 1;
     if (half_rows) {
         round_rows_to_half(img, y, chunk.height, half_rows);
@@ -212,9 +240,11 @@ static exr_result_t encode_chunk(exr_context_t ctx, exr_encode_pipeline_t *enc, 
     return r ? r : exr_encoding_run(ctx, 0, enc);
 }
 
-static int write_chunks(exr_context_t ctx, exr_stream *s, const sc_image *img, sc_pixel_type type) {
+static int write_chunks(exr_context_t ctx, exr_stream *s, const sc_image *img, sc_pixel_type type)
+{
     int32_t lines = 0;
-    if (check(s, exr_get_scanlines_per_chunk(ctx, 0, &lines)) != 0) return -1;
+    if (check(s, exr_get_scanlines_per_chunk(ctx, 0, &lines)) != 0)
+        return -1;
     uint16_t *half_rows = NULL;
     if (type == SC_PIXEL_HALF && !(half_rows = malloc((size_t)lines * (size_t)img->width *
                                                       (size_t)img->n_channels * sizeof *half_rows)))
@@ -224,27 +254,38 @@ static int write_chunks(exr_context_t ctx, exr_stream *s, const sc_image *img, s
     exr_result_t r = EXR_ERR_SUCCESS;
     for (int y = 0; !r && y < img->height; y += lines)
         r = encode_chunk(ctx, &enc, &started, img, y, half_rows);
-    if (started) exr_encoding_destroy(ctx, &enc);
+    if (started)
+        exr_encoding_destroy(ctx, &enc);
     free(half_rows);
     return check(s, r);
 }
 
 static int encode_exr(const char *name, const sc_image *img, sc_pixel_type type,
-                      const sc_image_attr *attrs, int n_attrs, exr_stream *s) {
+                      const sc_image_attr *attrs, int n_attrs, exr_stream *s)
+{
     exr_context_initializer_t init = stream_initializer(s);
     exr_context_t ctx = NULL;
     exr_pixel_type_t file_type = type == SC_PIXEL_HALF ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT;
-    if (check(s, exr_start_write(&ctx, name, EXR_WRITE_FILE_DIRECTLY, &init)) != 0) return -1;
-    int rc = check(s, define_header(ctx, img, file_type, attrs, n_attrs));
-    if (rc == 0) rc = write_chunks(ctx, s, img, type);
-    exr_result_t finished = exr_finish(&ctx); /* writes the chunk offset table */
-    return rc == 0 ? check(s, finished) : rc;
+    reporting_to = s;
+    int rc = check(s, exr_start_write(&ctx, name, EXR_WRITE_FILE_DIRECTLY, &init));
+    if (rc == 0)
+        rc = check(s, define_header(ctx, img, file_type, attrs, n_attrs));
+    if (rc == 0)
+        rc = write_chunks(ctx, s, img, type);
+    if (ctx) {
+        exr_result_t finished = exr_finish(&ctx); /* writes the chunk offset table */
+        if (rc == 0)
+            rc = check(s, finished);
+    }
+    reporting_to = NULL;
+    return rc;
 }
 
-static int write_bytes_atomically(const char *path, const exr_stream *s, char *err,
-                                  size_t errsize) {
+static int write_bytes_atomically(const char *path, const exr_stream *s, char *err, size_t errsize)
+{
     sc_atomic_file *f = sc_atomic_open(path, err, errsize);
-    if (!f) return -1;
+    if (!f)
+        return -1;
     if (fwrite(s->data, 1, s->size, sc_atomic_stream(f)) != s->size) {
         int errnum = errno ? errno : EIO;
         sc_atomic_abort(f);
@@ -255,7 +296,8 @@ static int write_bytes_atomically(const char *path, const exr_stream *s, char *e
 }
 
 int sc_exr_write(const char *path, const sc_image *img, sc_pixel_type type,
-                 const sc_image_attr *attrs, int n_attrs, char *err, size_t errsize) {
+                 const sc_image_attr *attrs, int n_attrs, char *err, size_t errsize)
+{
     exr_stream s = {.data = NULL};
     int rc = check_image(&s, img) == 0 && check_attrs(&s, attrs, n_attrs) == 0 &&
                      encode_exr(path, img, type, attrs, n_attrs, &s) == 0
@@ -272,10 +314,12 @@ int sc_exr_write(const char *path, const sc_image *img, sc_pixel_type type,
 /* ---- reading ----------------------------------------------------------------------------------
  */
 
-static const exr_attribute_t *find_attribute(exr_const_context_t ctx, const char *name) {
+static const exr_attribute_t *find_attribute(exr_const_context_t ctx, const char *name)
+{
     int32_t count = 0;
     const exr_attribute_t *a = NULL;
-    if (exr_get_attribute_count(ctx, 0, &count) != EXR_ERR_SUCCESS) return NULL;
+    if (exr_get_attribute_count(ctx, 0, &count) != EXR_ERR_SUCCESS)
+        return NULL;
     for (int32_t i = 0; i < count; i++)
         if (exr_get_attribute_by_index(ctx, 0, EXR_ATTR_LIST_FILE_ORDER, i, &a) ==
                 EXR_ERR_SUCCESS &&
@@ -285,7 +329,8 @@ static const exr_attribute_t *find_attribute(exr_const_context_t ctx, const char
 }
 
 /* The channel entry named exactly s (length-counted), or -1. */
-static int entry_named(const exr_attr_chlist_t *chl, const exr_attr_string_t *s) {
+static int entry_named(const exr_attr_chlist_t *chl, const exr_attr_string_t *s)
+{
     for (int i = 0; i < chl->num_channels; i++)
         if (chl->entries[i].name.length == s->length &&
             memcmp(chl->entries[i].name.str, s->str, (size_t)s->length) == 0)
@@ -295,8 +340,8 @@ static int entry_named(const exr_attr_chlist_t *chl, const exr_attr_string_t *s)
 
 /* The names in the image's own order when "shadecalc:channel_order" lists each of the file's
  * channels exactly once, otherwise in the file's (sorted) order. */
-static void channel_order(exr_const_context_t ctx, const exr_attr_chlist_t *chl,
-                          const char **names) {
+static void channel_order(exr_const_context_t ctx, const exr_attr_chlist_t *chl, const char **names)
+{
     for (int i = 0; i < chl->num_channels; i++)
         names[i] = chl->entries[i].name.str;
     const exr_attribute_t *a = find_attribute(ctx, channel_order_attr);
@@ -306,13 +351,15 @@ static void channel_order(exr_const_context_t ctx, const exr_attr_chlist_t *chl,
     int used[SC_IMAGE_MAX_CHANNELS] = {0};
     for (int i = 0; i < chl->num_channels; i++) {
         int e = entry_named(chl, &a->stringvector->strings[i]);
-        if (e < 0 || used[e]++) return;
+        if (e < 0 || used[e]++)
+            return;
         ordered[i] = chl->entries[e].name.str;
     }
     memcpy(names, ordered, (size_t)chl->num_channels * sizeof *names);
 }
 
-static int check_channels(exr_stream *s, const exr_attr_chlist_t *chl) {
+static int check_channels(exr_stream *s, const exr_attr_chlist_t *chl)
+{
     if (chl->num_channels < 1 || chl->num_channels > SC_IMAGE_MAX_CHANNELS)
         return fail(s, "%d channels (1 to %d are supported)", chl->num_channels,
                     SC_IMAGE_MAX_CHANNELS);
@@ -328,7 +375,8 @@ static int check_channels(exr_stream *s, const exr_attr_chlist_t *chl) {
 
 /* Storage, size and channels that this reader supports; then the zeroed image. */
 static int prepare_image(exr_const_context_t ctx, exr_stream *s, sc_image *out,
-                         exr_attr_box2i_t *window) {
+                         exr_attr_box2i_t *window)
+{
     exr_storage_t storage;
     const exr_attr_chlist_t *chl = NULL;
     int32_t chunks = 0;
@@ -338,7 +386,8 @@ static int prepare_image(exr_const_context_t ctx, exr_stream *s, sc_image *out,
         return -1;
     if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED)
         return fail(s, "deep data is not supported");
-    if (check_channels(s, chl) != 0) return -1;
+    if (check_channels(s, chl) != 0)
+        return -1;
     if (chunks < 1 || (uint64_t)chunks * sizeof(uint64_t) > s->size)
         return fail(s, "file too short for its %ld chunks", (long)chunks);
     int64_t width = (int64_t)window->max.x - window->min.x + 1;
@@ -355,7 +404,8 @@ static int prepare_image(exr_const_context_t ctx, exr_stream *s, sc_image *out,
 }
 
 /* Points every channel of the decoder at pixel (x, y) of out, converting to float. */
-static void point_decoder_at(exr_decode_pipeline_t *dec, sc_image *out, int x, int y) {
+static void point_decoder_at(exr_decode_pipeline_t *dec, sc_image *out, int x, int y)
+{
     for (int i = 0; i < dec->channel_count; i++) {
         exr_coding_channel_info_t *ch = &dec->channels[i];
         int c = sc_image_channel_index(out, ch->channel_name);
@@ -375,55 +425,66 @@ typedef struct {
 } chunk_decoder;
 
 /* Decodes one chunk whose top-left pixel lands at (x, y) of the image. */
-static exr_result_t decode_chunk(chunk_decoder *d, const exr_chunk_info_t *chunk, int x, int y) {
+static exr_result_t decode_chunk(chunk_decoder *d, const exr_chunk_info_t *chunk, int x, int y)
+{
     if (x < 0 || y < 0 || chunk->width > d->out->width - x || chunk->height > d->out->height - y)
         return EXR_ERR_CORRUPT_CHUNK;
     exr_result_t r = d->started ? exr_decoding_update(d->ctx, 0, chunk, &d->pipeline)
                                 : exr_decoding_initialize(d->ctx, 0, chunk, &d->pipeline);
-    if (r) return r;
+    if (r)
+        return r;
     d->started = 1;
     point_decoder_at(&d->pipeline, d->out, x, y);
     r = exr_decoding_choose_default_routines(d->ctx, 0, &d->pipeline);
     return r ? r : exr_decoding_run(d->ctx, 0, &d->pipeline);
 }
 
-static exr_result_t read_scanlines(chunk_decoder *d, const exr_attr_box2i_t *window) {
+static exr_result_t read_scanlines(chunk_decoder *d, const exr_attr_box2i_t *window)
+{
     int32_t lines = 0;
     exr_result_t r = exr_get_scanlines_per_chunk(d->ctx, 0, &lines);
     for (int64_t y = window->min.y; !r && y <= window->max.y; y += lines) {
         exr_chunk_info_t chunk;
         r = exr_read_scanline_chunk_info(d->ctx, 0, (int)y, &chunk);
-        if (!r) r = decode_chunk(d, &chunk, 0, (int)((int64_t)chunk.start_y - window->min.y));
+        if (!r)
+            r = decode_chunk(d, &chunk, 0, (int)((int64_t)chunk.start_y - window->min.y));
     }
     return r;
 }
 
-static exr_result_t read_tiles(chunk_decoder *d) {
+static exr_result_t read_tiles(chunk_decoder *d)
+{
     int32_t tile_w = 0, tile_h = 0;
     exr_result_t r = exr_get_tile_sizes(d->ctx, 0, 0, 0, &tile_w, &tile_h);
-    if (!r && (tile_w < 1 || tile_h < 1)) r = EXR_ERR_INVALID_ATTR;
+    if (!r && (tile_w < 1 || tile_h < 1))
+        r = EXR_ERR_INVALID_ATTR;
     int tiles_x = r ? 0 : (d->out->width - 1) / tile_w + 1;
     int tiles_y = r ? 0 : (d->out->height - 1) / tile_h + 1;
     for (int ty = 0; !r && ty < tiles_y; ty++)
         for (int tx = 0; !r && tx < tiles_x; tx++) {
             exr_chunk_info_t chunk;
             r = exr_read_tile_chunk_info(d->ctx, 0, tx, ty, 0, 0, &chunk);
-            if (!r) r = decode_chunk(d, &chunk, tx * tile_w, ty * tile_h);
+            if (!r)
+                r = decode_chunk(d, &chunk, tx * tile_w, ty * tile_h);
         }
     return r;
 }
 
 static int decode_pixels(exr_const_context_t ctx, exr_stream *s, sc_image *out,
-                         const exr_attr_box2i_t *window) {
+                         const exr_attr_box2i_t *window)
+{
     chunk_decoder d = {.ctx = ctx, .pipeline = EXR_DECODE_PIPELINE_INITIALIZER, .out = out};
     exr_storage_t storage = EXR_STORAGE_SCANLINE;
     exr_result_t r = exr_get_storage(ctx, 0, &storage);
-    if (!r) r = storage == EXR_STORAGE_TILED ? read_tiles(&d) : read_scanlines(&d, window);
-    if (d.started) exr_decoding_destroy(ctx, &d.pipeline);
+    if (!r)
+        r = storage == EXR_STORAGE_TILED ? read_tiles(&d) : read_scanlines(&d, window);
+    if (d.started)
+        exr_decoding_destroy(ctx, &d.pipeline);
     return check(s, r);
 }
 
-static char *copy_bytes(const char *s, size_t n) {
+static char *copy_bytes(const char *s, size_t n)
+{
     char *c = malloc(n + 1);
     if (c) {
         memcpy(c, s, n);
@@ -435,11 +496,14 @@ static char *copy_bytes(const char *s, size_t n) {
 /* The part's string attributes, in file order, without "type" (the part's storage kind, which
  * the file's structure states and the library writes itself). */
 static int collect_attrs(exr_const_context_t ctx, exr_stream *s, sc_image_attr **attrs,
-                         int *n_attrs) {
+                         int *n_attrs)
+{
     int32_t count = 0;
-    if (check(s, exr_get_attribute_count(ctx, 0, &count)) != 0) return -1;
+    if (check(s, exr_get_attribute_count(ctx, 0, &count)) != 0)
+        return -1;
     sc_image_attr *list = calloc(count > 0 ? (size_t)count : 1, sizeof *list);
-    if (!list) return fail(s, "out of memory");
+    if (!list)
+        return fail(s, "out of memory");
     int n = 0;
     for (int32_t i = 0; i < count; i++) {
         const exr_attribute_t *a = NULL;
@@ -460,24 +524,34 @@ static int collect_attrs(exr_const_context_t ctx, exr_stream *s, sc_image_attr *
     return 0;
 }
 
-static void clear_outputs(sc_image *out, sc_image_attr **attrs, int *n_attrs) {
+static void clear_outputs(sc_image *out, sc_image_attr **attrs, int *n_attrs)
+{
     memset(out, 0, sizeof *out);
-    if (attrs) *attrs = NULL;
-    if (n_attrs) *n_attrs = 0;
+    if (attrs)
+        *attrs = NULL;
+    if (n_attrs)
+        *n_attrs = 0;
 }
 
 int sc_exr_read_memory(const void *bytes, size_t size, const char *name, sc_image *out,
-                       sc_image_attr **attrs, int *n_attrs, char *err, size_t errsize) {
+                       sc_image_attr **attrs, int *n_attrs, char *err, size_t errsize)
+{
     clear_outputs(out, attrs, n_attrs);
     exr_stream s = {.data = (unsigned char *)bytes, .size = size};
     exr_context_initializer_t init = stream_initializer(&s);
     exr_context_t ctx = NULL;
     exr_attr_box2i_t window;
+    reporting_to = &s;
     int rc = check(&s, exr_start_read(&ctx, name, &init));
-    if (rc == 0) rc = prepare_image(ctx, &s, out, &window);
-    if (rc == 0) rc = decode_pixels(ctx, &s, out, &window);
-    if (rc == 0 && attrs && n_attrs) rc = collect_attrs(ctx, &s, attrs, n_attrs);
-    if (ctx) exr_finish(&ctx);
+    if (rc == 0)
+        rc = prepare_image(ctx, &s, out, &window);
+    if (rc == 0)
+        rc = decode_pixels(ctx, &s, out, &window);
+    if (rc == 0 && attrs && n_attrs)
+        rc = collect_attrs(ctx, &s, attrs, n_attrs);
+    if (ctx)
+        exr_finish(&ctx);
+    reporting_to = NULL;
     if (rc != 0) {
         sc_image_free(out);
         report(err, errsize, name, s.message);
@@ -486,16 +560,20 @@ int sc_exr_read_memory(const void *bytes, size_t size, const char *name, sc_imag
 }
 
 /* The whole file in memory (OpenEXR reads a file out of order: header, offsets, chunks). */
-static int read_whole_file(const char *path, unsigned char **bytes, size_t *size) {
+static int read_whole_file(const char *path, unsigned char **bytes, size_t *size)
+{
     FILE *f = fopen(path, "rb");
-    if (!f) return -1;
+    if (!f)
+        return -1;
     size_t capacity = 1 << 16, n = 0;
     unsigned char *data = malloc(capacity);
     while (data) {
         n += fread(data + n, 1, capacity - n, f);
-        if (n < capacity || capacity > SIZE_MAX / 2) break;
+        if (n < capacity || capacity > SIZE_MAX / 2)
+            break;
         unsigned char *grown = realloc(data, capacity *= 2);
-        if (!grown) free(data);
+        if (!grown)
+            free(data);
         data = grown;
     }
     int failed = !data || ferror(f);
@@ -512,7 +590,8 @@ static int read_whole_file(const char *path, unsigned char **bytes, size_t *size
 }
 
 int sc_exr_read(const char *path, sc_image *out, sc_image_attr **attrs, int *n_attrs, char *err,
-                size_t errsize) {
+                size_t errsize)
+{
     unsigned char *bytes = NULL;
     size_t size = 0;
     if (read_whole_file(path, &bytes, &size) != 0) {

@@ -19,18 +19,22 @@ struct sc_atomic_file {
 
 static atomic_uint temp_counter;
 
-static void report(char *err, size_t errsize, const char *path, int errnum) {
-    if (err && errsize) snprintf(err, errsize, "%s: %s", path, strerror(errnum ? errnum : EIO));
+static void report(char *err, size_t errsize, const char *path, int errnum)
+{
+    if (err && errsize)
+        snprintf(err, errsize, "%s: %s", path, strerror(errnum ? errnum : EIO));
 }
 
-static char *copy_string(const char *s) {
+static char *copy_string(const char *s)
+{
     size_t n = strlen(s) + 1;
     char *c = malloc(n);
     return c ? memcpy(c, s, n) : NULL;
 }
 
 /* "DIR/.BASE.PID.N.tmp" for path "DIR/BASE"; N counts temporaries made by this process. */
-static char *temp_name(const char *path) {
+static char *temp_name(const char *path)
+{
     const char *slash = strrchr(path, '/');
     int dir_len = slash ? (int)(slash - path + 1) : 0;
     size_t size = strlen(path) + 48;
@@ -43,7 +47,8 @@ static char *temp_name(const char *path) {
 
 /* Creates a fresh temporary (O_EXCL: never an existing file), with the mode of the file it will
  * replace if there is one. Returns the descriptor and sets *temp_out, or -1 with errno. */
-static int create_temp(const char *path, char **temp_out) {
+static int create_temp(const char *path, char **temp_out)
+{
     struct stat target;
     int have_target = stat(path, &target) == 0;
     if (have_target && S_ISDIR(target.st_mode)) {
@@ -74,7 +79,8 @@ static int create_temp(const char *path, char **temp_out) {
     return -1;
 }
 
-static sc_atomic_file *new_atomic_file(const char *path) {
+static sc_atomic_file *new_atomic_file(const char *path)
+{
     sc_atomic_file *f = calloc(1, sizeof *f);
     if (f && !(f->path = copy_string(path))) {
         free(f);
@@ -83,13 +89,15 @@ static sc_atomic_file *new_atomic_file(const char *path) {
     return f;
 }
 
-static void free_atomic_file(sc_atomic_file *f) {
+static void free_atomic_file(sc_atomic_file *f)
+{
     free(f->temp);
     free(f->path);
     free(f);
 }
 
-sc_atomic_file *sc_atomic_open(const char *path, char *err, size_t errsize) {
+sc_atomic_file *sc_atomic_open(const char *path, char *err, size_t errsize)
+{
     sc_atomic_file *f = new_atomic_file(path);
     if (!f) {
         report(err, errsize, path, ENOMEM);
@@ -114,33 +122,42 @@ sc_atomic_file *sc_atomic_open(const char *path, char *err, size_t errsize) {
     return f;
 }
 
-FILE *sc_atomic_stream(sc_atomic_file *f) {
+FILE *sc_atomic_stream(sc_atomic_file *f)
+{
     return f->stream;
 }
 
-const char *sc_atomic_temp_path(const sc_atomic_file *f) {
+const char *sc_atomic_temp_path(const sc_atomic_file *f)
+{
     return f->temp;
 }
 
 /* Flushes and syncs the stream; 0, or the errno of the first failure. */
-static int flush_and_sync(FILE *stream, int sync) {
+static int flush_and_sync(FILE *stream, int sync)
+{
     errno = 0;
-    if (fflush(stream) != 0 || ferror(stream)) return errno ? errno : EIO;
-    if (sync && fsync(fileno(stream)) != 0) return errno;
+    if (fflush(stream) != 0 || ferror(stream))
+        return errno ? errno : EIO;
+    if (sync && fsync(fileno(stream)) != 0)
+        return errno;
     return 0;
 }
 
-int sc_atomic_commit(sc_atomic_file *f, char *err, size_t errsize) {
+int sc_atomic_commit(sc_atomic_file *f, char *err, size_t errsize)
+{
     if (!f->temp) { /* stdout: nothing to rename */
         int failure = flush_and_sync(f->stream, 0);
-        if (failure) report(err, errsize, f->path, failure);
+        if (failure)
+            report(err, errsize, f->path, failure);
         free_atomic_file(f);
         return failure ? -1 : 0;
     }
     int failure = flush_and_sync(f->stream, 1);
     errno = 0;
-    if (fclose(f->stream) != 0 && !failure) failure = errno ? errno : EIO;
-    if (!failure && rename(f->temp, f->path) != 0) failure = errno;
+    if (fclose(f->stream) != 0 && !failure)
+        failure = errno ? errno : EIO;
+    if (!failure && rename(f->temp, f->path) != 0)
+        failure = errno;
     if (failure) {
         unlink(f->temp);
         report(err, errsize, f->path, failure);
@@ -149,8 +166,10 @@ int sc_atomic_commit(sc_atomic_file *f, char *err, size_t errsize) {
     return failure ? -1 : 0;
 }
 
-void sc_atomic_abort(sc_atomic_file *f) {
-    if (!f) return;
+void sc_atomic_abort(sc_atomic_file *f)
+{
+    if (!f)
+        return;
     if (f->temp) {
         fclose(f->stream);
         unlink(f->temp);

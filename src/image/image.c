@@ -5,30 +5,37 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int names_are_valid(int n, const char *const *names) {
+static int names_are_valid(int n, const char *const *names)
+{
     for (int c = 0; c < n; c++) {
-        if (!names[c] || !names[c][0]) return 0;
+        if (!names[c] || !names[c][0])
+            return 0;
         for (int d = 0; d < c; d++)
-            if (strcmp(names[c], names[d]) == 0) return 0;
+            if (strcmp(names[c], names[d]) == 0)
+                return 0;
     }
     return 1;
 }
 
-static int copy_names(sc_image *img, int n, const char *const *names) {
+static int copy_names(sc_image *img, int n, const char *const *names)
+{
     for (int c = 0; c < n; c++) {
         size_t len = strlen(names[c]) + 1;
-        if (!(img->channel[c] = malloc(len))) return -1;
+        if (!(img->channel[c] = malloc(len)))
+            return -1;
         memcpy(img->channel[c], names[c], len);
     }
     return 0;
 }
 
-int sc_image_init(sc_image *img, int width, int height, int n_channels, const char *const *names) {
+int sc_image_init(sc_image *img, int width, int height, int n_channels, const char *const *names)
+{
     memset(img, 0, sizeof *img);
     if (width < 1 || height < 1 || n_channels < 1 || n_channels > SC_IMAGE_MAX_CHANNELS || !names ||
         !names_are_valid(n_channels, names))
         return -1;
-    if ((size_t)height > SIZE_MAX / sizeof(float) / (size_t)n_channels / (size_t)width) return -1;
+    if ((size_t)height > SIZE_MAX / sizeof(float) / (size_t)n_channels / (size_t)width)
+        return -1;
     size_t pixels = (size_t)width * (size_t)height;
     img->width = width;
     img->height = height;
@@ -41,21 +48,26 @@ int sc_image_init(sc_image *img, int width, int height, int n_channels, const ch
     return 0;
 }
 
-void sc_image_free(sc_image *img) {
+void sc_image_free(sc_image *img)
+{
     for (int c = 0; c < SC_IMAGE_MAX_CHANNELS; c++)
         free(img->channel[c]);
     free(img->data);
     memset(img, 0, sizeof *img);
 }
 
-int sc_image_channel_index(const sc_image *img, const char *name) {
+int sc_image_channel_index(const sc_image *img, const char *name)
+{
     for (int c = 0; c < img->n_channels; c++)
-        if (strcmp(img->channel[c], name) == 0) return c;
+        if (strcmp(img->channel[c], name) == 0)
+            return c;
     return -1;
 }
 
-void sc_image_attrs_free(sc_image_attr *attrs, int n) {
-    if (!attrs) return;
+void sc_image_attrs_free(sc_image_attr *attrs, int n)
+{
+    if (!attrs)
+        return;
     for (int i = 0; i < n; i++) {
         free(attrs[i].name);
         free(attrs[i].value);
