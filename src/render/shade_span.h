@@ -2,17 +2,23 @@
  *
  * The seam for the SIMD batch shading kernels: the rasterizer gathers the points of one span
  * (a row of a tile, or a block of vertices for Gouraud), this function turns them into colours.
- * Today it calls sc_shade per point in the requested precision; a vectorized kernel that
- * takes the same inputs can replace its body. */
+ * In highp, scenes the batch shading kernel computes (lambert, normalized blinn-phong, GGX
+ * cook-torrance; directional and inverse-square point lights) go through it, on the instruction
+ * set SHADECALC_ISA or CPUID chose; everything else through sc_shade per point. */
 #ifndef SHADECALC_RENDER_SHADE_SPAN_H
 #define SHADECALC_RENDER_SHADE_SPAN_H
 
+#include "shadecalc/batch.h"
 #include "shadecalc/shade.h"
 
 typedef struct {
     double pos[3];    /* world-space point */
     double normal[3]; /* unit normal, facing the side being shaded */
 } render_shade_input;
+
+/* 1 and the kernel's uniforms if the batch shading kernel computes this scene's SPEC §6
+ * equation (the per-light ambient terms c_amb ⊙ L_A,k join the global one); 0 otherwise. */
+int render_batch_scene(const sc_scene *s, sc_batch_scene *out);
 
 /* rgb[3 i .. 3 i + 2] = L_o at in[i], seen from eye (v = normalize(eye − pos); v = n when the
  * point is the eye). */

@@ -12,6 +12,7 @@
 
 #include <cmocka.h>
 
+#include "render/shade_span.h"
 #include "render/view.h"
 #include "shadecalc/precision.h"
 #include "shadecalc/render.h"
@@ -229,6 +230,73 @@ static void threads_give_the_same_image(void **state)
     sc_framebuffer_free(&many);
     sc_mesh_free(&m);
     sc_surface_free(s);
+}
+
+/* highp shading of scenes the batch kernel computes goes through it (render/shade_span.c):
+ * the image matches the double sc_shade image within the kernel's accurate-tier bound
+ * (relative 2^-16 plus the float rounding of the inputs), for each of its BRDFs and with a
+ * directional and a point light. */
+static void batch_kernel_matches_sc_shade(void **state)
+{
+    (void)state;
+    enum { S = 64 };
+    static const char *const models[] = {"lambert", "blinn-phong m=40",
+                                         "cook-torrance alpha=0.3 f0=0.04"};
+    sc_surface *s = sphere();
+    sc_mesh m;
+    tessellate(s, 1500, &m);
+    char err[256];
+    sc_light lights[2];
+    assert_int_equal(sc_light_parse("point pos=2,-3,3 I=20", &lights[0], err, sizeof err), 0);
+    assert_int_equal(sc_light_parse("directional dir=-1,-1,1 E=0.5", &lights[1], err, sizeof err), 0);
+    for (size_t k = 0; k < sizeof models / sizeof models[0]; k++) {
+        sc_scene scene = {lights, 2, {0}, {0.1, 0.1, 0.1}};
+        assert_int_equal(sc_model_parse(models[k], &scene.model, err, sizeof err), 0);
+        sc_batch_scene bs;
+        assert_int_equal(render_batch_scene(&scene, &bs), 1); /* the kernel's path is taken */
+        assert_int_equal(bs.brdf, (int)k);
+        assert_true(fabsf(bs.lights[1].dir[0] + 0.57735f) < 1e-6f); /* unit, toward the light */
+        sc_framebuffer ref, fast;
+        assert_int_equal(sc_framebuffer_init(&ref, S, S), 0);
+        assert_int_equal(sc_framebuffer_init(&fast, S, S), 0);
+        sc_render_params p = {.mesh = &m, .surface = s, .scene = &scene, .prec = SC_DOUBLE,
+                              .shading = SC_SHADING_PHONG, .camera = side_view, .threads = 1};
+        assert_int_equal(sc_render(&p, &ref, err, sizeof err), 0);
+        p.prec = SC_HIGHP;
+        assert_int_equal(sc_render(&p, &fast, err, sizeof err), 0);
+        double worst = 0.0, peak = 0.0;
+        for (int i = 0; i < 4 * S * S; i++) {
+            worst = fmax(worst, fabs(fast.rgba[i] - ref.rgba[i]));
+            peak = fmax(peak, fabs(ref.rgba[i]));
+        }
+        if (worst > 1e-4 * peak)
+            fail_msg("%s: highp differs from double by %g (peak %g)", models[k], worst, peak);
+        sc_framebuffer_free(&ref);
+        sc_framebuffer_free(&fast);
+    }
+    sc_mesh_free(&m);
+    sc_surface_free(s);
+}
+
+/* What the kernel does not compute stays with sc_shade: other BRDFs, spot lights, other
+ * falloffs, legacy models. */
+static void other_scenes_keep_sc_shade(void **state)
+{
+    (void)state;
+    static const char *const lights[] = {"spot pos=0,0,3 dir=0,0,-1 I=5 cutoff=30",
+                                         "point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01",
+                                         "point pos=0,0,3 I=5"};
+    static const char *const models[] = {"lambert", "lambert", "phong m=20"};
+    for (int k = 0; k < 3; k++) {
+        scene_box b;
+        sc_batch_scene bs;
+        make_scene(&b, lights[k], models[k]);
+        assert_int_equal(render_batch_scene(&b.scene, &bs), 0);
+    }
+    scene_box b;
+    sc_batch_scene bs;
+    make_scene(&b, "point pos=0,0,3 I=5", "opengl");
+    assert_int_equal(render_batch_scene(&b.scene, &bs), 0);
 }
 
 /* The unit normal of the unit sphere where the ray through pixel (x, y)'s centre meets it
@@ -458,6 +526,8 @@ int main(void)
         cmocka_unit_test(phong_matches_ray_traced_point),
         cmocka_unit_test(z_buffer_keeps_nearest),
         cmocka_unit_test(threads_give_the_same_image),
+        cmocka_unit_test(batch_kernel_matches_sc_shade),
+        cmocka_unit_test(other_scenes_keep_sc_shade),
         cmocka_unit_test(exact_sphere_normals_match_ray_intersection),
         cmocka_unit_test(comparison_ordering),
         cmocka_unit_test(compare_metric_by_hand),
