@@ -19,7 +19,7 @@ typedef struct {
     sc_prec prec;
     int n_vars, threads;
     domain_tally *tally; /* one per worker */
-    char names[SWEEP_MAX_RESULTS][8];
+    char names[SWEEP_MAX_RESULTS][24];
 } expr_plan;
 
 static void record_domain(void *user, int column, const char *func, const char *rule)
