@@ -17,15 +17,15 @@ enum { MAX_IN = 9, MAX_OUT = 3 };
 /* ---- driver: k input arrays, m output arrays ---- */
 
 /* A lane function loads its inputs in[j] + i and stores its outputs out[j] + i itself, with
- * constant j: straight-line code, no copies. */
+ * constant j: straight-line code, no copies. params is args.params (the light kernels). */
 typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i,
-                          const sc_batch_scene *scene);
+                          const sc_batch_scene *scene, const void *params);
 
 static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 {
     size_t i = 0;
     for (; i + VW <= a->n; i += VW)
-        f(a->in, a->out, i, a->scene);
+        f(a->in, a->out, i, a->scene, a->params);
     if (i == a->n)
         return;
     float tail_in[MAX_IN][VW], tail_out[MAX_OUT][VW]; /* the tail, padded with 1 */
@@ -38,7 +38,7 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
     }
     for (int j = 0; j < m; j++)
         out[j] = tail_out[j];
-    f(in, out, 0, a->scene);
+    f(in, out, 0, a->scene, a->params);
     for (int j = 0; j < m; j++)
         for (size_t l = 0; i + l < a->n; l++)
             a->out[j][i + l] = tail_out[j][l];
@@ -148,17 +148,17 @@ static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
 static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
 
 static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i,
-                               const sc_batch_scene *s)
+                               const sc_batch_scene *s, const void *p)
 {
-    (void)s;
+    (void)s, (void)p;
     vf_storeu(out[0] + i, v3_dot(v3_load(in, 0, i), v3_load(in, 3, i)));
 }
 
 /* reflect(I, N) = I − 2 (N·I) N (GLSL ES; N unit) */
 static SC_INLINE void reflect_lane(const float *const *in, float *const *out, size_t e,
-                                   const sc_batch_scene *s)
+                                   const sc_batch_scene *s, const void *p)
 {
-    (void)s;
+    (void)s, (void)p;
     v3 i = v3_load(in, 0, e), n = v3_load(in, 3, e);
     vf k = vf_mul(vf_set1(-2.0f), v3_dot(n, i));
     v3_store((v3){vf_fma(k, n.x, i.x), vf_fma(k, n.y, i.y), vf_fma(k, n.z, i.z)}, out, e);
@@ -178,9 +178,9 @@ static SC_INLINE void length_tier(int tier, const float *const *in, float *const
 
 #define TIERED_LANE(name, body_fn, tier)                                                          \
     static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
-                               const sc_batch_scene *s)                                           \
+                               const sc_batch_scene *s, const void *p)                            \
     {                                                                                             \
-        (void)s;                                                                                  \
+        (void)s, (void)p;                                                                         \
         body_fn(tier, in, out, i);                                                                \
     }
 
@@ -278,8 +278,9 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
 
 #define SHADE_LANE(name, tier, brdf)                                                              \
     static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
-                               const sc_batch_scene *s)                                           \
+                               const sc_batch_scene *s, const void *p)                            \
     {                                                                                             \
+        (void)p;                                                                                  \
         shade_tier(tier, brdf, in, out, i, s);                                                    \
     }
 #define SHADE_KERNEL(name, tier)                                                                  \
