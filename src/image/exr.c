@@ -193,35 +193,87 @@ static exr_result_t define_header(exr_context_t ctx, const sc_image *img, exr_pi
     return r ? r : exr_write_header(ctx);
 }
 
-/* Points every channel of the encoder at its column of interleaved rows of elem_size values
- * (rows: the chunk's first row, width × n_channels values per row). */
-static void point_encoder_at(exr_encode_pipeline_t *enc, const sc_image *img,
-                             const unsigned char *rows, int elem_size)
+/* Chunks travel through planar buffers, one plane of width × rows values per channel: OpenEXR
+ * 3.1's fast paths for interleaved pixels assume the channel pointers in the file's (sorted)
+ * order and swap channels otherwise (RGBA half came back ABGR), and planes take no fast path. */
+typedef struct {
+    unsigned char *bytes;
+    size_t size;
+} plane_buffer;
+
+/* Room for n_channels planes of `values` values of elem_size bytes each; 0 or -1. */
+static int reserve_planes(plane_buffer *b, size_t values, int n_channels, int elem_size)
 {
-    for (int i = 0; i < enc->channel_count; i++) {
-        exr_coding_channel_info_t *ch = &enc->channels[i];
+    size_t need = values * (size_t)n_channels * (size_t)elem_size;
+    if (need <= b->size)
+        return 0;
+    unsigned char *grown = realloc(b->bytes, need);
+    if (!grown)
+        return -1;
+    b->bytes = grown;
+    b->size = need;
+    return 0;
+}
+
+/* Points every coding channel at the plane of the image channel of the same name. */
+static void point_at_planes(exr_coding_channel_info_t *channels, int count, const sc_image *img,
+                            unsigned char *planes, int width, int rows, int elem_size)
+{
+    size_t plane_bytes = (size_t)width * (size_t)rows * (size_t)elem_size;
+    for (int i = 0; i < count; i++) {
+        exr_coding_channel_info_t *ch = &channels[i];
         int c = sc_image_channel_index(img, ch->channel_name);
-        ch->user_data_type = ch->data_type;
         ch->user_bytes_per_element = (int16_t)elem_size;
-        ch->user_pixel_stride = elem_size * img->n_channels;
-        ch->user_line_stride = ch->user_pixel_stride * img->width;
-        ch->encode_from_ptr = rows + (size_t)c * (size_t)elem_size;
+        ch->user_pixel_stride = elem_size;
+        ch->user_line_stride = elem_size * width;
+        ch->decode_to_ptr = planes + (size_t)c * plane_bytes; /* also encode_from_ptr */
     }
 }
 
-/* Rows [y, y + rows) rounded to binary16, in the image's interleaved layout. */
-static void round_rows_to_half(const sc_image *img, int y, int rows, uint16_t *out)
+/* Rows [y, y + rows) of img into planes, as binary16 (sc_half_from_double) or binary32. */
+static void fill_planes(const sc_image *img, int y, int rows, sc_pixel_type type,
+                        unsigned char *planes)
 {
-    size_t per_row = (size_t)img->width * (size_t)img->n_channels;
-    const float *in = img->data + (size_t)y * per_row;
-    for (size_t i = 0; i < (size_t)rows * per_row; i++)
-        out[i] = sc_half_from_double(in[i]);
+    size_t plane_values = (size_t)img->width * (size_t)rows;
+    uint16_t *half = (uint16_t *)planes;
+    float *single = (float *)planes;
+    for (int c = 0; c < img->n_channels; c++)
+        for (size_t i = 0; i < plane_values; i++) {
+            float v = sc_image_pixel(img, 0, y)[i * (size_t)img->n_channels + (size_t)c];
+            if (type == SC_PIXEL_HALF)
+                half[(size_t)c * plane_values + i] = sc_half_from_double(v);
+            else
+                single[(size_t)c * plane_values + i] = v;
+        }
+}
+
+/* The file format stores a chunk raw when compressing does not make it smaller, and readers
+ * take a chunk as raw when its size is the raw size. OpenEXR's Core writer before the fix of
+ * issue #2306 (PR #2307) keeps zlib output of exactly the raw size, which every reader then
+ * misreads (seen here: the last 16-byte chunk of a 2 × 49 RGBA half image). The library's
+ * compressor is wrapped to store such a chunk raw. */
+typedef struct {
+    exr_result_t (*compress)(exr_encode_pipeline_t *enc);
+} library_compressor;
+
+static exr_result_t compress_or_store_raw(exr_encode_pipeline_t *enc)
+{
+    const library_compressor *library = enc->encoding_user_data;
+    exr_result_t r = library->compress(enc);
+    if (r == EXR_ERR_SUCCESS && enc->compressed_bytes >= enc->packed_bytes &&
+        enc->compressed_buffer != enc->packed_buffer) {
+        memcpy(enc->compressed_buffer, enc->packed_buffer, enc->packed_bytes);
+        enc->compressed_bytes = enc->packed_bytes;
+    }
+    return r;
 }
 
 static exr_result_t encode_chunk(exr_context_t ctx, exr_encode_pipeline_t *enc, int *started,
-                                 const sc_image *img, int y, uint16_t *half_rows)
+                                 const sc_image *img, int y, sc_pixel_type type,
+                                 plane_buffer *planes, library_compressor *library)
 {
     exr_chunk_info_t chunk;
+    int elem_size = type == SC_PIXEL_HALF ? (int)sizeof(uint16_t) : (int)sizeof(float);
     exr_result_t r = exr_write_scanline_chunk_info(ctx, 0, y, &chunk);
     if (!r)
         r = *started ? exr_encoding_update(ctx, 0, &chunk, enc)
@@ -229,14 +281,20 @@ static exr_result_t encode_chunk(exr_context_t ctx, exr_encode_pipeline_t *enc, 
     if (r)
         return r;
     *started = 1;
-    if (half_rows) {
-        round_rows_to_half(img, y, chunk.height, half_rows);
-        point_encoder_at(enc, img, (const unsigned char *)half_rows, (int)sizeof(uint16_t));
-    } else {
-        const float *rows = sc_image_pixel(img, 0, y);
-        point_encoder_at(enc, img, (const unsigned char *)rows, (int)sizeof(float));
-    }
+    if (reserve_planes(planes, (size_t)img->width * (size_t)chunk.height, img->n_channels,
+                       elem_size) != 0)
+        return EXR_ERR_OUT_OF_MEMORY;
+    fill_planes(img, y, chunk.height, type, planes->bytes);
+    point_at_planes(enc->channels, enc->channel_count, img, planes->bytes, img->width,
+                    chunk.height, elem_size);
+    for (int i = 0; i < enc->channel_count; i++)
+        enc->channels[i].user_data_type = enc->channels[i].data_type;
     r = exr_encoding_choose_default_routines(ctx, 0, enc);
+    if (!r && enc->compress_fn) {
+        library->compress = enc->compress_fn;
+        enc->compress_fn = compress_or_store_raw;
+        enc->encoding_user_data = library;
+    }
     return r ? r : exr_encoding_run(ctx, 0, enc);
 }
 
@@ -245,18 +303,16 @@ static int write_chunks(exr_context_t ctx, exr_stream *s, const sc_image *img, s
     int32_t lines = 0;
     if (check(s, exr_get_scanlines_per_chunk(ctx, 0, &lines)) != 0)
         return -1;
-    uint16_t *half_rows = NULL;
-    if (type == SC_PIXEL_HALF && !(half_rows = malloc((size_t)lines * (size_t)img->width *
-                                                      (size_t)img->n_channels * sizeof *half_rows)))
-        return fail(s, "out of memory");
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
+    plane_buffer planes = {NULL, 0};
+    library_compressor library = {NULL};
     int started = 0;
     exr_result_t r = EXR_ERR_SUCCESS;
     for (int y = 0; !r && y < img->height; y += lines)
-        r = encode_chunk(ctx, &enc, &started, img, y, half_rows);
+        r = encode_chunk(ctx, &enc, &started, img, y, type, &planes, &library);
     if (started)
         exr_encoding_destroy(ctx, &enc);
-    free(half_rows);
+    free(planes.bytes);
     return check(s, r);
 }
 
@@ -403,40 +459,50 @@ static int prepare_image(exr_const_context_t ctx, exr_stream *s, sc_image *out,
     return 0;
 }
 
-/* Points every channel of the decoder at pixel (x, y) of out, converting to float. */
-static void point_decoder_at(exr_decode_pipeline_t *dec, sc_image *out, int x, int y)
-{
-    for (int i = 0; i < dec->channel_count; i++) {
-        exr_coding_channel_info_t *ch = &dec->channels[i];
-        int c = sc_image_channel_index(out, ch->channel_name);
-        ch->user_data_type = EXR_PIXEL_FLOAT;
-        ch->user_bytes_per_element = (int16_t)sizeof(float);
-        ch->user_pixel_stride = (int32_t)sizeof(float) * out->n_channels;
-        ch->user_line_stride = ch->user_pixel_stride * out->width;
-        ch->decode_to_ptr = (uint8_t *)(sc_image_pixel(out, x, y) + c);
-    }
-}
-
 typedef struct {
     exr_const_context_t ctx;
     exr_decode_pipeline_t pipeline;
     int started;
+    plane_buffer planes;
     sc_image *out;
 } chunk_decoder;
 
-/* Decodes one chunk whose top-left pixel lands at (x, y) of the image. */
+/* Copies the decoded planes of a width × rows chunk to pixel (x, y) of out onwards. */
+static void scatter_planes(sc_image *out, const float *planes, int x, int y, int width, int rows)
+{
+    size_t plane_values = (size_t)width * (size_t)rows;
+    for (int c = 0; c < out->n_channels; c++)
+        for (int r = 0; r < rows; r++)
+            for (int i = 0; i < width; i++)
+                sc_image_pixel(out, x + i, y + r)[c] =
+                    planes[(size_t)c * plane_values + (size_t)r * (size_t)width + (size_t)i];
+}
+
+/* Decodes one chunk, converted to float, whose top-left pixel lands at (x, y) of the image. */
 static exr_result_t decode_chunk(chunk_decoder *d, const exr_chunk_info_t *chunk, int x, int y)
 {
-    if (x < 0 || y < 0 || chunk->width > d->out->width - x || chunk->height > d->out->height - y)
+    sc_image *out = d->out;
+    if (x < 0 || y < 0 || chunk->width < 0 || chunk->height < 0 ||
+        chunk->width > out->width - x || chunk->height > out->height - y)
         return EXR_ERR_CORRUPT_CHUNK;
     exr_result_t r = d->started ? exr_decoding_update(d->ctx, 0, chunk, &d->pipeline)
                                 : exr_decoding_initialize(d->ctx, 0, chunk, &d->pipeline);
     if (r)
         return r;
     d->started = 1;
-    point_decoder_at(&d->pipeline, d->out, x, y);
+    if (reserve_planes(&d->planes, (size_t)chunk->width * (size_t)chunk->height, out->n_channels,
+                       (int)sizeof(float)) != 0)
+        return EXR_ERR_OUT_OF_MEMORY;
+    point_at_planes(d->pipeline.channels, d->pipeline.channel_count, out, d->planes.bytes,
+                    chunk->width, chunk->height, (int)sizeof(float));
+    for (int i = 0; i < d->pipeline.channel_count; i++)
+        d->pipeline.channels[i].user_data_type = EXR_PIXEL_FLOAT;
     r = exr_decoding_choose_default_routines(d->ctx, 0, &d->pipeline);
-    return r ? r : exr_decoding_run(d->ctx, 0, &d->pipeline);
+    if (!r)
+        r = exr_decoding_run(d->ctx, 0, &d->pipeline);
+    if (!r)
+        scatter_planes(out, (const float *)d->planes.bytes, x, y, chunk->width, chunk->height);
+    return r;
 }
 
 static exr_result_t read_scanlines(chunk_decoder *d, const exr_attr_box2i_t *window)
@@ -480,6 +546,7 @@ static int decode_pixels(exr_const_context_t ctx, exr_stream *s, sc_image *out,
         r = storage == EXR_STORAGE_TILED ? read_tiles(&d) : read_scanlines(&d, window);
     if (d.started)
         exr_decoding_destroy(ctx, &d.pipeline);
+    free(d.planes.bytes);
     return check(s, r);
 }
 
