@@ -129,7 +129,11 @@ double sc_sweep_var_value(const sc_sweep_var *v, long i)
         double a = log10(fabs(v->start)), b = log10(fabs(v->stop));
         return copysign(pow(10.0, a + (b - a) * (double)i / (double)(v->count - 1)), v->start);
     }
-    return v->start + (v->stop - v->start) * (double)i / (double)(v->count - 1);
+    double steps = (double)(v->count - 1), span = v->stop - v->start;
+    if (isfinite(span * steps)) /* span·i then one division: 0:1:11 gives 0.3, not 0.30…04 */
+        return v->start + span * (double)i / steps;
+    double t = (double)i / steps; /* ends near ±DBL_MAX */
+    return v->start * (1.0 - t) + v->stop * t;
 }
 
 void sc_sweep_var_free(sc_sweep_var *v)
