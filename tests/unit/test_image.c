@@ -199,24 +199,32 @@ static int same_value(float a, float b)
     return (isnan(a) && isnan(b)) || (a == b && signbit(a) == signbit(b));
 }
 
+/* Writes the n values as one row of a one-channel image stored as type; they must read back
+ * as want (same sign of zero, NaN as NaN). */
+static void assert_row_comes_back_as(const float *values, const float *want, int n,
+                                     sc_pixel_type type)
+{
+    const char *names[] = {"V"};
+    sc_image img, back;
+    assert_int_equal(sc_image_init(&img, n, 1, 1, names), 0);
+    memcpy(img.data, values, (size_t)n * sizeof *values);
+    write_ok(in_dir(0, "row.exr"), &img, type, NULL, 0);
+    read_back(in_dir(0, "row.exr"), &back, NULL, NULL);
+    for (int i = 0; i < n; i++)
+        if (!same_value(back.data[i], want[i]))
+            fail_msg("value %d (%a): %a, want %a", i, values[i], back.data[i], want[i]);
+    sc_image_free(&img);
+    sc_image_free(&back);
+}
+
 static void float_keeps_every_bit_pattern_class(void **state)
 {
     (void)state;
     const float values[] = {0.0f,      -0.0f,      1.0f / 3.0f, -0x1.fffffep127f,
                             0x1p-149f, -0x1p-126f, INFINITY,    -INFINITY,
                             NAN,       65520.0f,   3.14159265f, 1e-30f};
-    const int n = (int)(sizeof values / sizeof values[0]);
-    const char *names[] = {"V"};
-    sc_image img, back;
-    assert_int_equal(sc_image_init(&img, n, 1, 1, names), 0);
-    memcpy(img.data, values, sizeof values);
-    write_ok(in_dir(0, "float.exr"), &img, SC_PIXEL_FLOAT, NULL, 0);
-    read_back(in_dir(0, "float.exr"), &back, NULL, NULL);
-    for (int i = 0; i < n; i++)
-        if (!same_value(back.data[i], values[i]))
-            fail_msg("value %d: %a, want %a", i, back.data[i], values[i]);
-    sc_image_free(&img);
-    sc_image_free(&back);
+    assert_row_comes_back_as(values, values, (int)(sizeof values / sizeof values[0]),
+                             SC_PIXEL_FLOAT);
 }
 
 /* Binary16 has 11 significant bits, exponents -14..15, subnormal step 2^-24 (IEEE 754-2008);
@@ -241,18 +249,7 @@ static void half_rounds_to_nearest_even(void **state)
     const float want[] = {
         1.0f,  1.0f + 0x1p-9f, 1.0f + 0x1p-10f, -2048.0f, 2 * 0x1p-24f, 4 * 0x1p-24f, 0.0f,
         -0.0f, 65504.0f,       65504.0f,        INFINITY, -INFINITY,    NAN,          0x1.998p-4f};
-    const int n = (int)(sizeof in / sizeof in[0]);
-    const char *names[] = {"H"};
-    sc_image img, back;
-    assert_int_equal(sc_image_init(&img, n, 1, 1, names), 0);
-    memcpy(img.data, in, sizeof in);
-    write_ok(in_dir(0, "half.exr"), &img, SC_PIXEL_HALF, NULL, 0);
-    read_back(in_dir(0, "half.exr"), &back, NULL, NULL);
-    for (int i = 0; i < n; i++)
-        if (!same_value(back.data[i], want[i]))
-            fail_msg("value %d (%a): %a, want %a", i, in[i], back.data[i], want[i]);
-    sc_image_free(&img);
-    sc_image_free(&back);
+    assert_row_comes_back_as(in, want, (int)(sizeof in / sizeof in[0]), SC_PIXEL_HALF);
 }
 
 /* Every binary16 value comes back as itself, and random floats as the project's rounding. */
