@@ -1,12 +1,14 @@
 /* OpenEXR files through OpenEXR's Core C API (OpenEXR 3.1, openexr.h): the writer encodes a
  * scanline ZIP file into memory and hands the bytes to an atomic file (shadecalc/file.h); the
- * reader decodes a file held in memory, chunk by chunk, straight into the float image.
+ * reader decodes a file held in memory, chunk by chunk, into the float image.
  *
  * Pipeline (OpenEXR "Reading and Writing Image Files", Core API): a context with custom
  * read/write callbacks; per chunk, exr_{read,write}_*_chunk_info, then an encode or decode
- * pipeline whose channel pointers and strides address our interleaved buffer, run with the
- * library's default (un)pack routines. Half values are rounded by sc_half_from_double, so a file
- * holds exactly the mediump values the rest of shadecalc computes. */
+ * pipeline whose channel pointers address planar staging buffers, run with the library's default
+ * (un)pack routines (which convert half and uint to float when reading). Half values are rounded
+ * by sc_half_from_double, so a file holds exactly the mediump values the rest of shadecalc
+ * computes. Two defects of OpenEXR 3.1 are worked around below (planar buffers, tie-sized ZIP
+ * chunks). */
 #include "shadecalc/image.h"
 
 #include <errno.h>
@@ -130,8 +132,7 @@ static void report(char *err, size_t errsize, const char *path, const char *reas
         snprintf(err, errsize, "%s: %s", path, reason[0] ? reason : "unknown OpenEXR error");
 }
 
-/* ---- writing ----------------------------------------------------------------------------------
- */
+/* ---- writing ------------------------------------------------------------------------------ */
 
 static int check_image(exr_stream *s, const sc_image *img)
 {
@@ -285,8 +286,8 @@ static exr_result_t encode_chunk(exr_context_t ctx, exr_encode_pipeline_t *enc, 
                        elem_size) != 0)
         return EXR_ERR_OUT_OF_MEMORY;
     fill_planes(img, y, chunk.height, type, planes->bytes);
-    point_at_planes(enc->channels, enc->channel_count, img, planes->bytes, img->width,
-                    chunk.height, elem_size);
+    point_at_planes(enc->channels, enc->channel_count, img, planes->bytes, img->width, chunk.height,
+                    elem_size);
     for (int i = 0; i < enc->channel_count; i++)
         enc->channels[i].user_data_type = enc->channels[i].data_type;
     r = exr_encoding_choose_default_routines(ctx, 0, enc);
@@ -355,20 +356,20 @@ int sc_exr_write(const char *path, const sc_image *img, sc_pixel_type type,
                  const sc_image_attr *attrs, int n_attrs, char *err, size_t errsize)
 {
     exr_stream s = {.data = NULL};
-    int rc = check_image(&s, img) == 0 && check_attrs(&s, attrs, n_attrs) == 0 &&
-                     encode_exr(path, img, type, attrs, n_attrs, &s) == 0
-                 ? 0
-                 : -1;
-    if (rc != 0)
-        report(err, errsize, path, s.message);
-    else
+    int rc = check_image(&s, img);
+    if (rc == 0)
+        rc = check_attrs(&s, attrs, n_attrs);
+    if (rc == 0)
+        rc = encode_exr(path, img, type, attrs, n_attrs, &s);
+    if (rc == 0)
         rc = write_bytes_atomically(path, &s, err, errsize);
+    else
+        report(err, errsize, path, s.message);
     free(s.data);
     return rc;
 }
 
-/* ---- reading ----------------------------------------------------------------------------------
- */
+/* ---- reading ------------------------------------------------------------------------------ */
 
 static const exr_attribute_t *find_attribute(exr_const_context_t ctx, const char *name)
 {
@@ -482,8 +483,8 @@ static void scatter_planes(sc_image *out, const float *planes, int x, int y, int
 static exr_result_t decode_chunk(chunk_decoder *d, const exr_chunk_info_t *chunk, int x, int y)
 {
     sc_image *out = d->out;
-    if (x < 0 || y < 0 || chunk->width < 0 || chunk->height < 0 ||
-        chunk->width > out->width - x || chunk->height > out->height - y)
+    if (x < 0 || y < 0 || chunk->width < 0 || chunk->height < 0 || chunk->width > out->width - x ||
+        chunk->height > out->height - y)
         return EXR_ERR_CORRUPT_CHUNK;
     exr_result_t r = d->started ? exr_decoding_update(d->ctx, 0, chunk, &d->pipeline)
                                 : exr_decoding_initialize(d->ctx, 0, chunk, &d->pipeline);
