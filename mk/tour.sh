@@ -44,3 +44,17 @@ compare_dir=$(dirname "$bin")/compare
 mkdir -p "$compare_dir"
 step render --compare --size 256x256 --output-dir "$compare_dir"
 echo "(images and error maps: $compare_dir/*.exr)"
+
+echo; echo "== Sweeps: the lecture's figures as tables, SVG plots and an EXR image (issue 5) =="
+out=${SHADECALC_OUT:-out}
+mkdir -p "$out"
+step sweep --var x=0:1:6 'pow(x, 32.0)'
+step sweep --var r=0:12:7 --light 'point pos=0,0,$r I=1 atten=window rstart=1 rend=10' --format tsv
+for preset in attenuation spot lobe albedo; do
+    step sweep --preset "$preset" --plot "$out/$preset.svg" -o "$out/$preset.csv"
+done
+step sweep --var theta_h=0:90:91 --var theta_d=0:90:91 --brdf 'cook-torrance alpha=0.2' \
+    --image "$out/slice.exr"
+echo "(plots, tables and the theta_h x theta_d image slice, written to $out/:"
+ls "$out"
+echo ")"
