@@ -82,7 +82,4 @@ int sweep_pictures_consume(void *user, uint64_t row, const double *vars, const d
 int sweep_pictures_write(sweep_pictures *p);
 void sweep_pictures_free(sweep_pictures *p);
 
-/* The angle variables that place l and v (theta_i ... phi_d). */
-int sweep_is_angle(const char *name);
-
 #endif

@@ -81,14 +81,6 @@ static void halfway_directions(const sc_frame *f, double theta_h, double phi_h, 
     }
 }
 
-int sweep_is_angle(const char *name)
-{
-    for (int a = 0; a < 8; a++)
-        if (strcmp(name, angle_names[a]) == 0)
-            return 1;
-    return 0;
-}
-
 static double angle_or(const shade_plan *s, const double *vars, int a, double fallback)
 {
     return s->angle[a] >= 0 ? vars[s->angle[a]] : fallback;
