@@ -72,6 +72,37 @@ typedef struct {
 void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, sc_batch_scene *out);
 const char *sc_batch_brdf_name(sc_batch_brdf brdf);
 
+/* ---- light function and BRDF parameters ---- */
+
+/* atten_<function> (SPEC §3, light.h): each kernel reads the fields of its function. */
+typedef struct {
+    float sc, sl, sq;           /* clq: 1 / max(s_c + s_l r + s_q r², 10^-4) */
+    float r_start, r_end;       /* window: 0 <= r_start <= r_end (equal: a step) */
+    float f_max, f_c, r_c, s_e; /* pixar (Barzel 1997): 0 < f_c <= f_max, r_c, s_e > 0 */
+    float r_max;                /* windowed inverse-square: r_max > 0 */
+} sc_batch_atten_params;
+
+/* spot_<function> (SPEC §4), angles in degrees. */
+typedef struct {
+    float exponent;     /* opengl, directx: >= 0 */
+    float cutoff;       /* opengl: 0..90, or 180 (no cone) */
+    float inner, outer; /* directx, smoothstep: 0 <= inner <= outer <= 180 */
+} sc_batch_spot_params;
+
+/* brdf (SPEC §6, brdf.h), isotropic: one roughness α for Ward and Cook–Torrance. */
+typedef struct {
+    int model;                     /* sc_brdf_kind (brdf.h); out of range: lambert */
+    int form;                      /* the model's variant: SC_PHONG_*, SC_BLINN_*, SC_WARD_*,
+                                      SC_OREN_*, SC_CT_* of brdf.h */
+    int cos;                       /* nonzero: the kernel returns f·cos θ_i, not f */
+    int D, G, F;                   /* cook-torrance: sc_ndf, sc_masking, sc_fresnel (brdf.h) */
+    float diff[3], spec[3], f0[3]; /* c_diff (oren-nayar: ρ), c_spec, Schlick's F0 */
+    float m;                       /* phong, blinn-phong exponent, >= 0 */
+    float alpha;                   /* ward, cook-torrance roughness (taken >= 10^-4) */
+    float sigma;                   /* oren-nayar σ, radians */
+    float ior;                     /* exact Fresnel η > 0 */
+} sc_batch_brdf_params;
+
 /* ---- kernels ---- */
 
 /* Arguments of every kernel: in[i] are the input arrays, out[j] the output arrays, scene the
@@ -83,7 +114,15 @@ const char *sc_batch_brdf_name(sc_batch_brdf brdf);
  *   normalize                            x y z              out: x y z
  *   length                               x y z              out: value
  *   shade                                nx ny nz vx vy vz px py pz (n, v need not be unit;
- *                                        p is read only for point lights)   out: r g b */
+ *                                        p is read only for point lights)   out: r g b
+ *   atten_none atten_invsq atten_clq     r (distance)       out: f_d
+ *   atten_window atten_pixar atten_windowed                 params: sc_batch_atten_params
+ *   spot_opengl spot_directx             cos θ_s            out: spot factor
+ *   spot_smoothstep                                         params: sc_batch_spot_params
+ *   brdf                                 lx ly lz vx vy vz nx ny nz (toward the light, the
+ *                                        viewer; the normal; need not be unit)
+ *                                        out: r g b (f, or f·cos θ_i; 0 below the horizon)
+ *                                        params: sc_batch_brdf_params */
 typedef struct {
     const float *in[9];
     float *out[3];

@@ -3,6 +3,24 @@
 #ifndef SHADECALC_BATCH_REFERENCE_LIGHT_H
 #define SHADECALC_BATCH_REFERENCE_LIGHT_H
 
+#include "batch/reference.h"
 #include "shadecalc/batch.h"
+#include "shadecalc/brdf.h"
+
+#define SC_BATCH_REFS_LIGHT(X)                                                                    \
+    X(atten_none) X(atten_invsq) X(atten_clq) X(atten_window) X(atten_pixar) X(atten_windowed)   \
+    X(spot_opengl) X(spot_directx) X(spot_smoothstep) X(brdf)
+SC_BATCH_REFS_LIGHT(SC_DECLARE_REF)
+
+/* l, v, n in random directions, magnitudes 2^±30, |cos θ_i|, |cos θ_o| >= 2^-6 (most above
+ * the horizon) */
+void sc_batch_gen_brdf(uint64_t *rng, float *in);
+
+/* The parameters of the table's rows (the tests and the bench). */
+extern const sc_batch_atten_params sc_batch_test_atten;
+extern const sc_batch_spot_params sc_batch_test_spot;
+/* cook-torrance GGX, Smith height-correlated, Schlick: the model with the most terms (the
+ * others are tested in tests/unit/test_batch_light.c) */
+extern const sc_batch_brdf_params sc_batch_test_brdf;
 
 #endif

@@ -1,2 +1,616 @@
 /* The attenuation, spot and BRDF batch kernels, written once against the vector helpers and
- * included after src/simd/shade_impl.h by each instruction set's file. */
+ * included after src/simd/shade_impl.h by each instruction set's file.
+ *
+ * Tiers (the enum of shade_impl.h): ACCURATE has sqrt and division rounded once and the u1
+ * pow/exp (double lanes; the scalar built-ins in plain C); FAST12 the rsqrt/rcp estimates with
+ * one Newton step and pow/exp_bits12. Every kernel computes the uniforms of its parameters once
+ * per call (brdf_setup, atten_setup, spot_setup) and hands them to the lanes as args.params.
+ * The attenuation and spot functions are rational functions and one pow/exp: their fast tiers
+ * keep the division (a fraction of a nanosecond) and change only pow and exp.
+ */
+#include "shadecalc/brdf.h"
+#include "shadecalc/light.h"
+
+/* ---- pow and exp by tier; the u1 ones hand NaN, infinities and zeros to the built-ins ---- */
+
+static SC_INLINE vf light_pow(int tier, vf x, vf y)
+{
+    if (tier != ACCURATE)
+        return tier == FAST12 ? pow_bits12(x, y) : pow_bits8(x, y);
+#ifdef SIMD_HAS_DOUBLE
+    return pow_u1(x, y);
+#else
+    return sc_powf(x, y);
+#endif
+}
+
+static SC_INLINE vf light_exp(int tier, vf x)
+{
+    if (tier != ACCURATE)
+        return tier == FAST12 ? exp_bits12(x) : exp_bits8(x);
+#ifdef SIMD_HAS_DOUBLE
+    return exp_u1(x);
+#else
+    return sc_expf(x);
+#endif
+}
+
+static SC_INLINE vf vf_clamp(vf x, float lo, float hi)
+{
+    return vf_min(vf_max(x, vf_set1(lo)), vf_set1(hi));
+}
+
+/* ---- one input, one output: attenuation of r and spot of cos θ_s ---- */
+
+enum { MAX_UNIFORMS = 6 };
+typedef struct {
+    float k[MAX_UNIFORMS]; /* named by each function's setup */
+} func_uniforms;
+
+typedef vf (*func_fn)(int tier, vf x, const func_uniforms *u);
+typedef void (*func_setup_fn)(const void *params, func_uniforms *u);
+
+static SC_INLINE void func_lane(int tier, func_fn f, const float *const *in, float *const *out,
+                                size_t i, const void *u)
+{
+    vf_storeu(out[0] + i, f(tier, vf_loadu(in[0] + i), u));
+}
+
+static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_fn lane,
+                                   const void *uniforms)
+{
+    sc_batch_args b = *a;
+    b.params = uniforms;
+    run_n(&b, k, m, lane);
+}
+
+#define FUNC_KERNEL(name, tier, f, setup)                                                         \
+    static SC_INLINE void name##_lane(const float *const *in, float *const *out, size_t i,       \
+                                      const sc_batch_scene *s, const void *u)                     \
+    {                                                                                             \
+        (void)s;                                                                                  \
+        func_lane(tier, f, in, out, i, u);                                                        \
+    }                                                                                             \
+    void K(name)(const sc_batch_args *a);                                                         \
+    void K(name)(const sc_batch_args *a)                                                          \
+    {                                                                                             \
+        func_uniforms u;                                                                          \
+        setup(a->params, &u);                                                                     \
+        run_uniforms(a, 1, 1, name##_lane, &u);                                                   \
+    }
+
+/* -- attenuation (SPEC §3; light.c): denominators at least 1e-4, so r = 0 is finite -- */
+
+/* k: sc sl sq | r_start r_end 1/(r_end − r_start) | f_c r_c s_e f_max k0 −k1 | 1/r_max */
+static inline void atten_setup_clq(const void *params, func_uniforms *u)
+{
+    const sc_batch_atten_params *p = params;
+    *u = (func_uniforms){{p->sc, p->sl, p->sq}};
+}
+
+static inline void atten_setup_window(const void *params, func_uniforms *u)
+{
+    const sc_batch_atten_params *p = params;
+    *u = (func_uniforms){{p->r_start, p->r_end, (float)((double)p->r_end - p->r_start)}};
+}
+
+/* pixar: k0 = ln(f_c/f_max), k1 = s_e/k0 in double, once (f_c = f_max: flat, k0 = 0) */
+static inline void atten_setup_pixar(const void *params, func_uniforms *u)
+{
+    const sc_batch_atten_params *p = params;
+    double k0 = log((double)p->f_c / p->f_max);
+    *u = (func_uniforms){{p->f_c, p->r_c, p->s_e, p->f_max, (float)k0,
+                          k0 == 0.0 ? 0.0f : (float)(-p->s_e / k0)}};
+}
+
+/* k: r_max, r_max², 1/r_max^4 */
+static inline void atten_setup_windowed(const void *params, func_uniforms *u)
+{
+    const sc_batch_atten_params *p = params;
+    double r2 = (double)p->r_max * p->r_max;
+    *u = (func_uniforms){{p->r_max, (float)r2, (float)(1.0 / (r2 * r2))}};
+}
+
+static inline void no_setup(const void *params, func_uniforms *u)
+{
+    (void)params;
+    *u = (func_uniforms){{0}};
+}
+
+static SC_INLINE vf inverse_square(vf r)
+{
+    return vf_div(vf_set1(1.0f), vf_max(vf_mul(r, r), vf_set1(1e-4f)));
+}
+
+static SC_INLINE vf atten_none(int tier, vf r, const func_uniforms *u)
+{
+    (void)tier, (void)r, (void)u;
+    return vf_set1(1.0f);
+}
+
+static SC_INLINE vf atten_invsq(int tier, vf r, const func_uniforms *u)
+{
+    (void)tier, (void)u;
+    return inverse_square(r);
+}
+
+static SC_INLINE vf atten_clq(int tier, vf r, const func_uniforms *u)
+{
+    (void)tier;
+    vf d = vf_add(vf_fma(vf_set1(u->k[1]), r, vf_set1(u->k[0])), vf_mul(vf_set1(u->k[2]), vf_mul(r, r)));
+    return vf_div(vf_set1(1.0f), vf_max(d, vf_set1(1e-4f)));
+}
+
+/* 1 for r <= r_start, 0 for r >= r_end (so r_start = r_end is a step), else the ramp */
+static SC_INLINE vf atten_window(int tier, vf r, const func_uniforms *u)
+{
+    (void)tier;
+    vf ramp = vf_div(vf_sub(vf_set1(u->k[1]), r), vf_set1(u->k[2]));
+    vf f = vf_select(vf_le(vf_set1(u->k[1]), r), vf_set1(0.0f), ramp);
+    return vf_select(vf_le(r, vf_set1(u->k[0])), vf_set1(1.0f), f);
+}
+
+/* Barzel 1997: f_c (r_c/r)^s_e beyond r_c; f_max exp(k0 (r/r_c)^(−k1)) inside (−k1 > 0, so
+ * r = 0 gives f_max); f_c = f_max is the flat limit f_max. */
+static SC_INLINE vf atten_pixar(int tier, vf r, const func_uniforms *u)
+{
+    vf rc = vf_set1(u->k[1]);
+    vf outside = vf_mul(vf_set1(u->k[0]), light_pow(tier, vf_div(rc, r), vf_set1(u->k[2])));
+    vf inside = vf_set1(u->k[3]);
+    if (u->k[4] != 0.0f) {
+        vf t = light_pow(tier, vf_max(vf_div(r, rc), vf_set1(0.0f)), vf_set1(u->k[5]));
+        inside = vf_mul(inside, light_exp(tier, vf_mul(vf_set1(u->k[4]), t)));
+    }
+    return vf_select(vf_lt(rc, r), outside, inside);
+}
+
+/* Karis 2013: saturate(1 − (r/r_max)^4)² / max(r², 1e-4), with 1 − (r/r_max)^4 as
+ * (r_max − r)(r_max + r)(r_max² + r²)/r_max^4: no cancellation as r -> r_max */
+static SC_INLINE vf atten_windowed(int tier, vf r, const func_uniforms *u)
+{
+    (void)tier;
+    vf rm = vf_set1(u->k[0]);
+    vf d = vf_mul(vf_sub(rm, r), vf_add(rm, r));
+    vf w = vf_mul(vf_mul(d, vf_fma(r, r, vf_set1(u->k[1]))), vf_set1(u->k[2]));
+    w = vf_clamp(w, 0.0f, 1.0f);
+    return vf_mul(vf_mul(w, w), inverse_square(r));
+}
+
+FUNC_KERNEL(atten_none_u1, ACCURATE, atten_none, no_setup)
+FUNC_KERNEL(atten_invsq_u2, ACCURATE, atten_invsq, no_setup)
+FUNC_KERNEL(atten_clq_u3, ACCURATE, atten_clq, atten_setup_clq)
+FUNC_KERNEL(atten_window_u2, ACCURATE, atten_window, atten_setup_window)
+FUNC_KERNEL(atten_pixar_u4, ACCURATE, atten_pixar, atten_setup_pixar)
+FUNC_KERNEL(atten_pixar_bits12, FAST12, atten_pixar, atten_setup_pixar)
+FUNC_KERNEL(atten_windowed_u12, ACCURATE, atten_windowed, atten_setup_windowed)
+
+/* -- spot (SPEC §4): the cone's cosines in double, rounded toward the inside of each test so
+ * that cos θ_s >= cos θ_p and cos θ_s <= cos θ_u decide as in double -- */
+
+static const double deg = 3.14159265358979323846 / 180.0;
+
+static float float_at_least(double x) /* the least float >= x */
+{
+    float f = (float)x;
+    return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+static float float_at_most(double x)
+{
+    float f = (float)x;
+    return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+/* k: cos θ_u (at least), exponent, 1 for no cone */
+static inline void spot_setup_opengl(const void *params, func_uniforms *u)
+{
+    const sc_batch_spot_params *p = params;
+    *u = (func_uniforms){{float_at_least(cos(p->cutoff * deg)), p->exponent,
+                          p->cutoff == 180.0f ? 1.0f : 0.0f}};
+}
+
+/* k: cos θ_p (at least), cos θ_u (at most) as hi + lo, 1/(cos θ_p − cos θ_u), exponent: the
+ * ramp (cos θ_s − cos θ_u)/(cos θ_p − cos θ_u) keeps its relative accuracy near the edge */
+static inline void spot_setup_penumbra(const void *params, func_uniforms *u)
+{
+    const sc_batch_spot_params *p = params;
+    double cp = cos(p->inner * deg), cu = cos(p->outer * deg);
+    float cu_hi = float_at_most(cu);
+    *u = (func_uniforms){{float_at_least(cp), cu_hi, (float)(cu - cu_hi),
+                          cp > cu ? (float)(1.0 / (cp - cu)) : 0.0f, p->exponent}};
+}
+
+/* x^e with pow(0, 0) = 1 and 0 for x <= 0 (the cosine lobes, light.c lobe_pow) */
+static SC_INLINE vf lobe_pow(int tier, vf x, float e)
+{
+    if (e == 0.0f)
+        return vf_set1(1.0f);
+    vf pos = vf_lt(vf_set1(0.0f), x);
+    return vf_select(pos, light_pow(tier, vf_select(pos, x, vf_set1(1.0f)), vf_set1(e)), vf_set1(0.0f));
+}
+
+static SC_INLINE vf spot_opengl(int tier, vf c, const func_uniforms *u)
+{
+    if (u->k[2] != 0.0f)
+        return vf_set1(1.0f);
+    return vf_select(vf_le(vf_set1(u->k[0]), c), lobe_pow(tier, c, u->k[1]), vf_set1(0.0f));
+}
+
+/* 1 inside the inner cone, 0 outside the outer one, else shape(ramp) */
+static SC_INLINE vf penumbra(vf c, const func_uniforms *u, vf shaped)
+{
+    vf f = vf_select(vf_le(c, vf_set1(u->k[1])), vf_set1(0.0f), shaped);
+    return vf_select(vf_le(vf_set1(u->k[0]), c), vf_set1(1.0f), f);
+}
+
+static SC_INLINE vf ramp(vf c, const func_uniforms *u)
+{
+    vf t = vf_sub(vf_sub(c, vf_set1(u->k[1])), vf_set1(u->k[2]));
+    return vf_clamp(vf_mul(t, vf_set1(u->k[3])), 0.0f, 1.0f);
+}
+
+static SC_INLINE vf spot_directx(int tier, vf c, const func_uniforms *u)
+{
+    return penumbra(c, u, lobe_pow(tier, ramp(c, u), u->k[4]));
+}
+
+/* pbrt-v4: smoothstep t²(3 − 2t) */
+static SC_INLINE vf spot_smoothstep(int tier, vf c, const func_uniforms *u)
+{
+    (void)tier;
+    vf t = ramp(c, u);
+    return penumbra(c, u, vf_mul(vf_mul(t, t), vf_fma(vf_set1(-2.0f), t, vf_set1(3.0f))));
+}
+
+FUNC_KERNEL(spot_opengl_u1, ACCURATE, spot_opengl, spot_setup_opengl)
+FUNC_KERNEL(spot_opengl_bits12, FAST12, spot_opengl, spot_setup_opengl)
+FUNC_KERNEL(spot_directx_u16, ACCURATE, spot_directx, spot_setup_penumbra)
+FUNC_KERNEL(spot_directx_bits12, FAST12, spot_directx, spot_setup_penumbra)
+FUNC_KERNEL(spot_smoothstep_u4, ACCURATE, spot_smoothstep, spot_setup_penumbra)
+
+/* ---- BRDFs (SPEC §6, brdf.h): in l, v, n; out f (or f cos θ_i) as r, g, b ----
+ *
+ * With n, l, v normalized and the unnormalized half vector h_u = l + v, the isotropic models
+ * need only n·l, n·v, h_u·h_u, n·h_u and |n × h_u|² (= (h_u·h_u) sin²θ_h, without the
+ * cancellation of 1 − cos²θ_h at the highlight). A model returns weights w_j with
+ * f_c = Σ_j w_j col_j[c] for colour vectors fixed per call (brdf_setup). */
+
+static const float pi_f = 3.14159265358979323846f;
+
+typedef struct {
+    float col[3][3]; /* f_c = w_0 col[0][c] + w_1 col[1][c] + w_2 col[2][c] */
+    float k[4];      /* the model's constants, named by brdf_setup */
+    float m, a2;     /* exponent; α² (α >= 1e-4) */
+    int form, cos, D, G, F;
+} brdf_uniforms;
+
+typedef struct {
+    v3 n, l, v;
+    vf nl, nv, hh, hn, s2; /* n·l, n·v, h_u·h_u, n·h_u, |n × h_u|² */
+} brdf_geometry;
+
+typedef struct {
+    vf w[3];
+} brdf_weights;
+
+static SC_INLINE v3 v3_cross(v3 a, v3 b)
+{
+    return (v3){vf_sub(vf_mul(a.y, b.z), vf_mul(a.z, b.y)), vf_sub(vf_mul(a.z, b.x), vf_mul(a.x, b.z)),
+                vf_sub(vf_mul(a.x, b.y), vf_mul(a.y, b.x))};
+}
+
+static SC_INLINE vf cross2(v3 a, v3 b) /* |a × b|² */
+{
+    v3 c = v3_cross(a, b);
+    return v3_dot(c, c);
+}
+
+static SC_INLINE brdf_geometry brdf_geometry_of(int tier, const float *const *in, size_t i)
+{
+    int nt = tier == FAST8 ? FAST12 : tier; /* the lobes multiply the directions' errors */
+    brdf_geometry g;
+    g.l = v3_normalize(nt, v3_load(in, 0, i));
+    g.v = v3_normalize(nt, v3_load(in, 3, i));
+    g.n = v3_normalize(nt, v3_load(in, 6, i));
+    g.nl = v3_dot(g.n, g.l);
+    g.nv = v3_dot(g.n, g.v);
+    v3 hu = v3_add(g.l, g.v);
+    g.hh = v3_dot(hu, hu);
+    g.hn = vf_add(g.nl, g.nv);
+    g.s2 = cross2(g.n, hu);
+    return g;
+}
+
+static SC_INLINE brdf_weights weights(vf w0, vf w1, vf w2) { return (brdf_weights){{w0, w1, w2}}; }
+
+static SC_INLINE vf inv_pi_v(void) { return vf_set1(inv_pi_f); }
+
+/* cos θ_i, floored as brdf.c's divisions (inactive in the stated domain) */
+static SC_INLINE vf cos_floor(vf c) { return vf_max(c, vf_set1(1e-6f)); }
+
+static SC_INLINE brdf_weights model_lambert(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    (void)tier, (void)u, (void)g;
+    return weights(inv_pi_v(), vf_set1(0.0f), vf_set1(0.0f));
+}
+
+/* lobe^m for a cosine: pow(0, 0) = 1, else 0 for a non-positive base. */
+static SC_INLINE vf cos_lobe(int tier, vf c, float m)
+{
+    if (m == 0.0f)
+        return vf_set1(1.0f);
+    return light_pow(tier, vf_max(c, vf_set1(0.0f)), vf_set1(m));
+}
+
+/* Phong: cos α_r = r·v with r = 2(n·l)n − l, as 1 − |r − v|²/2 (accurate at the peak, where
+ * m multiplies its error); k0 = the normalization 1/π, (m+2)/(2π); original divides by
+ * π cos θ_i (Phong 1975, Lewis 1994, Lafortune 1994). */
+static SC_INLINE brdf_weights model_phong(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    v3 rv = v3_sub(v3_scale(g->n, vf_add(g->nl, g->nl)), v3_add(g->l, g->v));
+    vf c = vf_fma(vf_set1(-0.5f), v3_dot(rv, rv), vf_set1(1.0f));
+    vf lobe = vf_mul(cos_lobe(tier, c, u->m), vf_set1(u->k[0]));
+    if (u->form == SC_PHONG_ORIGINAL)
+        lobe = vf_mul(lobe, tier_rcp(tier, cos_floor(g->nl)));
+    return weights(inv_pi_v(), lobe, vf_set1(0.0f));
+}
+
+/* Blinn-Phong: (n·h)^m = (1 − |n × h_u|²/(h_u·h_u))^(m/2) times k0 = (m+8)/(8π) (normalized,
+ * RTR3 §7.6) or 1 (plain); cos²θ_h from sin²θ_h stays accurate at the peak. */
+static SC_INLINE brdf_weights model_blinn_phong(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    vf sin2 = vf_mul(g->s2, tier_rcp(tier, vf_max(g->hh, vf_set1(FLT_MIN))));
+    vf lobe = cos_lobe(tier, vf_sub(vf_set1(1.0f), sin2), 0.5f * u->m);
+    return weights(inv_pi_v(), vf_mul(lobe, vf_set1(u->k[0])), vf_set1(0.0f));
+}
+
+/* tan²θ_h / α² = |n × h_u|² / (α² (n·h_u)²): the exponent of Ward and Beckmann */
+static SC_INLINE vf slope_exponent(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    vf hn2 = vf_mul(g->hn, g->hn);
+    return vf_mul(g->s2, tier_rcp(tier, vf_mul(vf_set1(u->a2), hn2)));
+}
+
+/* Ward (reference §9), isotropic: E = exp(−tan²θ_h/α²) over 4π α² √(cos θ_i cos θ_o) (1992),
+ * 4π α² cos θ_i cos θ_o (duer) or π α² (h_u·n)^4/(h_u·h_u) (gmd); k0 = 1/(4πα²) or 1/(πα²). */
+static SC_INLINE brdf_weights model_ward(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    vf e = light_exp(tier, vf_sub(vf_set1(0.0f), slope_exponent(tier, u, g)));
+    vf ci = cos_floor(g->nl), co = cos_floor(g->nv), den;
+    if (u->form == SC_WARD_DUER) {
+        den = vf_mul(ci, co);
+    } else if (u->form == SC_WARD_GMD) {
+        vf hn2 = vf_mul(g->hn, g->hn);
+        den = cos_floor(vf_mul(vf_mul(hn2, hn2), tier_rcp(tier, g->hh)));
+    } else {
+        den = tier_sqrt(tier, vf_mul(ci, co));
+    }
+    return weights(inv_pi_v(), vf_mul(vf_mul(e, vf_set1(u->k[0])), tier_rcp(tier, den)), vf_set1(0.0f));
+}
+
+/* asin x for 0 <= x <= 1/2: x + x R(x²), musl asinf's rational R (error < 1 ULP in float) */
+static SC_INLINE vf asin_half(int tier, vf x)
+{
+    vf z = vf_mul(x, x);
+    vf p = vf_mul(z, vf_fma(z, vf_fma(z, vf_set1(-8.6563630030e-03f), vf_set1(-4.2743422091e-02f)),
+                            vf_set1(1.6666586697e-01f)));
+    vf q = vf_fma(z, vf_set1(-7.0662963390e-01f), vf_set1(1.0f));
+    return vf_fma(x, vf_mul(p, tier_rcp(tier, q)), x);
+}
+
+/* θ in [0, π/2] from cos θ = c >= 0 and sin θ = s: π/2 − asin c for c < 1/2, else
+ * 2 asin(sin(θ/2)) with sin(θ/2) = s/√(2 + 2c) (no cancellation near θ = 0) */
+static SC_INLINE vf angle_of(int tier, vf c, vf s)
+{
+    vm low = vf_lt(c, vf_set1(0.5f));
+    vf half = vf_mul(s, tier_rsqrt(tier, vf_fma(vf_set1(2.0f), c, vf_set1(2.0f))));
+    vf a = asin_half(tier, vf_select(low, c, half));
+    return vf_select(low, vf_sub(vf_set1(1.57079632679489662f), a), vf_add(a, a));
+}
+
+/* Oren–Nayar (reference §10): α = max(θ_i, θ_o), β = min; cos Δφ = (n × l)·(n × v) /
+ * (|n × l| |n × v|), 0 where either is below 1e-12; tan((α+β)/2) = (sin α + sin β)/(cos α +
+ * cos β). k0 = A (= C1), k1 = B, k2 = 0.125 σ²/(σ²+0.09), k3 = 0.17/π σ²/(σ²+0.13). */
+static SC_INLINE brdf_weights model_oren_nayar(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    v3 nxl = v3_cross(g->n, g->l), nxv = v3_cross(g->n, g->v);
+    vf ll = v3_dot(nxl, nxl), vv = v3_dot(nxv, nxv);
+    vm tangent = vm_and(vf_lt(vf_set1(1e-24f), ll), vf_lt(vf_set1(1e-24f), vv));
+    vf inv = vf_mul(tier_rsqrt(tier, vf_max(ll, vf_set1(1e-24f))), tier_rsqrt(tier, vf_max(vv, vf_set1(1e-24f))));
+    vf cdp = vf_select(tangent, vf_clamp(vf_mul(v3_dot(nxl, nxv), inv), -1.0f, 1.0f), vf_set1(0.0f));
+    vf sin_a = tier_sqrt(tier, vf_max(vf_max(ll, vv), vf_set1(FLT_MIN)));
+    vf sin_b = tier_sqrt(tier, vf_max(vf_min(ll, vv), vf_set1(FLT_MIN)));
+    vf cos_a = vf_min(g->nl, g->nv), cos_b = vf_max(g->nl, g->nv);
+    vf tan_b = vf_mul(sin_b, tier_rcp(tier, cos_b));
+    vf A = vf_set1(u->k[0]), B = vf_set1(u->k[1]);
+    if (u->form != SC_OREN_FULL) /* A + B max(0, cos Δφ) sin α tan β */
+        return weights(vf_mul(vf_fma(B, vf_mul(vf_max(cdp, vf_set1(0.0f)), vf_mul(sin_a, tan_b)), A), inv_pi_v()),
+                       vf_set1(0.0f), vf_set1(0.0f));
+    vf alpha = angle_of(tier, cos_a, sin_a), beta = angle_of(tier, cos_b, sin_b);
+    vf tb = vf_mul(beta, vf_set1(2.0f / pi_f)), tb2 = vf_mul(tb, tb); /* 2β/π */
+    vf sin_term = vf_select(vf_lt(cdp, vf_set1(0.0f)), vf_sub(sin_a, vf_mul(tb2, tb)), sin_a);
+    vf c2 = vf_mul(B, sin_term);
+    vf ab = vf_mul(vf_mul(alpha, beta), vf_set1(4.0f / (pi_f * pi_f)));
+    vf c3 = vf_mul(vf_set1(u->k[2]), vf_mul(ab, ab));
+    vf tan_half = vf_mul(vf_add(sin_a, sin_b), tier_rcp(tier, vf_add(cos_a, cos_b)));
+    vf abs_cdp = vf_max(cdp, vf_sub(vf_set1(0.0f), cdp));
+    vf f1 = vf_fma(vf_mul(cdp, c2), tan_b, A);
+    f1 = vf_fma(vf_mul(vf_sub(vf_set1(1.0f), abs_cdp), c3), tan_half, f1);
+    vf f2 = vf_mul(vf_set1(u->k[3]), vf_sub(vf_set1(1.0f), vf_mul(cdp, tb2)));
+    return weights(vf_mul(vf_max(f1, vf_set1(0.0f)), inv_pi_v()), vf_set1(0.0f), f2);
+}
+
+/* Beckmann Smith Λ(w) = (erfc(a) − e^(−a²)/(a√π))·(−1/2), a = cos θ/(α sin θ), with
+ * erfc(a) = t exp(−a² + P(t)), t = 1/(1 + a/2) (Numerical Recipes erfcc, relative error
+ * < 1.2e-7): Λ = e^(−a²) (1/(a√π) − t e^P(t)) / 2. */
+static const float erfc_c[10] = {0.17087277f, -0.82215223f, 1.48851587f, -1.13520398f,
+                                 0.27886807f, -0.18628806f, 0.09678418f, 0.37409196f,
+                                 1.00002368f, -1.26551223f};
+
+static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c)
+{
+    vf s = tier_sqrt(tier, vf_max(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)), vf_set1(FLT_MIN)));
+    vf a = vf_mul(c, tier_rcp(tier, vf_mul(vf_set1(u->k[0]), s))); /* k0 = α */
+    vf t = tier_rcp(tier, vf_fma(vf_set1(0.5f), a, vf_set1(1.0f)));
+    vf erfc_scaled = vf_mul(t, light_exp(tier, poly(t, erfc_c, 10)));
+    vf tail = tier_rcp(tier, vf_mul(a, vf_set1(1.7724538509055160273f)));
+    vf e = light_exp(tier, vf_sub(vf_set1(0.0f), vf_mul(a, a)));
+    return vf_mul(vf_mul(vf_set1(0.5f), e), vf_sub(tail, erfc_scaled));
+}
+
+/* D with h unit: GGX α² (h_u·h_u)² / (π (|n×h_u|² + α² (n·h_u)²)²); Beckmann
+ * exp(−tan²θ_h/α²) (h_u·h_u)² / (π α² (n·h_u)^4) */
+static SC_INLINE vf ndf(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    vf hh2 = vf_mul(g->hh, g->hh), hn2 = vf_mul(g->hn, g->hn);
+    if (u->D == SC_D_GGX) {
+        vf d = vf_fma(vf_set1(u->a2), hn2, g->s2);
+        return vf_mul(vf_mul(vf_set1(u->a2 * inv_pi_f), hh2), tier_rcp(tier, vf_mul(d, d)));
+    }
+    vf e = light_exp(tier, vf_sub(vf_set1(0.0f), slope_exponent(tier, u, g)));
+    return vf_mul(vf_mul(e, hh2), tier_rcp(tier, vf_mul(vf_set1(pi_f * u->a2), vf_mul(hn2, hn2))));
+}
+
+/* V = G / (4 cos θ_i cos θ_o). GGX Smith with q = √(cos² (1 − α²) + α²) = cos θ √(1 + α²tan²θ):
+ * separable 1/((n·l + q_l)(n·v + q_v)), height-correlated 1/(2 (q_l n·v + q_v n·l)) (Heitz
+ * 2014 eq. 99); v-cavity min(1, 4 (n·h_u) min(n·l, n·v) / (h_u·h_u)) / (4 n·l n·v). */
+static SC_INLINE vf visibility(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    vf four_cc = vf_mul(vf_set1(4.0f), vf_mul(cos_floor(g->nl), cos_floor(g->nv)));
+    if (u->G == SC_G_VCAVITY) {
+        vf k = vf_mul(vf_mul(vf_set1(4.0f), g->hn), tier_rcp(tier, g->hh));
+        vf G = vf_min(vf_set1(1.0f), vf_mul(k, vf_min(g->nl, g->nv)));
+        return vf_mul(G, tier_rcp(tier, four_cc));
+    }
+    if (u->D == SC_D_BECKMANN) {
+        vf ll = beckmann_lambda(tier, u, g->nl), lv = beckmann_lambda(tier, u, g->nv), den;
+        if (u->G == SC_G_SMITH_CORRELATED)
+            den = vf_add(vf_add(vf_set1(1.0f), ll), lv);
+        else
+            den = vf_mul(vf_add(vf_set1(1.0f), ll), vf_add(vf_set1(1.0f), lv));
+        return tier_rcp(tier, vf_mul(den, four_cc));
+    }
+    vf one_a2 = vf_set1(1.0f - u->a2), a2 = vf_set1(u->a2);
+    vf ql = tier_sqrt(tier, vf_fma(vf_mul(g->nl, g->nl), one_a2, a2));
+    vf qv = tier_sqrt(tier, vf_fma(vf_mul(g->nv, g->nv), one_a2, a2));
+    if (u->G == SC_G_SMITH_CORRELATED)
+        return tier_rcp(tier, vf_mul(vf_set1(2.0f), vf_fma(ql, g->nv, vf_mul(qv, g->nl))));
+    return tier_rcp(tier, vf_mul(vf_add(g->nl, ql), vf_add(g->nv, qv)));
+}
+
+/* Exact dielectric Fresnel (pbrt FrDielectric) at cos θ = c, η = k1; 1 on total internal
+ * reflection. */
+static SC_INLINE vf fresnel_exact(int tier, const brdf_uniforms *u, vf c)
+{
+    vf eta = vf_set1(u->k[1]);
+    vf sin2_t = vf_mul(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)), vf_set1(u->k[2]));
+    vf cos_t = tier_sqrt(tier, vf_max(vf_sub(vf_set1(1.0f), sin2_t), vf_set1(FLT_MIN)));
+    vf ec = vf_mul(eta, c), et = vf_mul(eta, cos_t);
+    vf r_par = vf_mul(vf_sub(ec, cos_t), tier_rcp(tier, vf_add(ec, cos_t)));
+    vf r_perp = vf_mul(vf_sub(c, et), tier_rcp(tier, vf_add(c, et)));
+    vf F = vf_mul(vf_set1(0.5f), vf_fma(r_par, r_par, vf_mul(r_perp, r_perp)));
+    return vf_select(vf_le(vf_set1(1.0f), sin2_t), vf_set1(1.0f), F);
+}
+
+/* Cook–Torrance (reference §11): S = D V (× 4 for the 1982 form, k3); Schlick F =
+ * F0 + (1 − F0)(1 − v·h)^5 splits as S·(c_spec F0) + S (1 − v·h)^5·(c_spec (1 − F0)); with
+ * v·h = |h_u|/2 for unit l, v. */
+static SC_INLINE brdf_weights model_cook_torrance(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+{
+    vf S = vf_mul(vf_mul(ndf(tier, u, g), visibility(tier, u, g)), vf_set1(u->k[3]));
+    vf vh = vf_clamp(vf_mul(vf_set1(0.5f), tier_sqrt(tier, vf_max(g->hh, vf_set1(FLT_MIN)))), 0.0f, 1.0f);
+    if (u->F == SC_F_SCHLICK) {
+        vf c = vf_sub(vf_set1(1.0f), vh), c2 = vf_mul(c, c);
+        return weights(inv_pi_v(), S, vf_mul(S, vf_mul(vf_mul(c2, c2), c)));
+    }
+    if (u->F == SC_F_EXACT)
+        S = vf_mul(S, fresnel_exact(tier, u, vh));
+    return weights(inv_pi_v(), S, vf_set1(0.0f));
+}
+
+/* The colour vectors and constants of one call. */
+static inline void brdf_setup(sc_brdf_kind kind, const sc_batch_brdf_params *p, brdf_uniforms *u)
+{
+    float alpha = p->alpha > 1e-4f ? p->alpha : 1e-4f, s2 = p->sigma * p->sigma;
+    *u = (brdf_uniforms){.m = p->m, .a2 = alpha * alpha, .form = p->form, .cos = p->cos,
+                         .D = p->D, .G = p->G, .F = p->F};
+    for (int c = 0; c < 3; c++) {
+        u->col[0][c] = p->diff[c];
+        u->col[1][c] = kind == SC_BRDF_COOK_TORRANCE && p->F == SC_F_SCHLICK ? p->spec[c] * p->f0[c]
+                                                                            : p->spec[c];
+        u->col[2][c] = kind == SC_BRDF_OREN_NAYAR ? p->diff[c] * p->diff[c]
+                                                  : p->spec[c] * (1.0f - p->f0[c]);
+    }
+    switch (kind) {
+    case SC_BRDF_PHONG:
+        u->k[0] = p->form == SC_PHONG_NORMALIZED ? (p->m + 2.0f) / (2.0f * pi_f) : inv_pi_f;
+        break;
+    case SC_BRDF_BLINN_PHONG:
+        u->k[0] = p->form == SC_BLINN_PLAIN ? 1.0f : (p->m + 8.0f) / (8.0f * pi_f);
+        break;
+    case SC_BRDF_WARD: u->k[0] = 1.0f / ((p->form == SC_WARD_GMD ? 1.0f : 4.0f) * pi_f * u->a2); break;
+    case SC_BRDF_OREN_NAYAR:
+        u->k[0] = 1.0f - 0.5f * s2 / (s2 + 0.33f);
+        u->k[1] = 0.45f * s2 / (s2 + 0.09f);
+        u->k[2] = 0.125f * s2 / (s2 + 0.09f);
+        u->k[3] = 0.17f * inv_pi_f * (s2 / (s2 + 0.13f));
+        break;
+    case SC_BRDF_COOK_TORRANCE:
+        u->k[0] = alpha;
+        u->k[1] = p->ior;
+        u->k[2] = 1.0f / (p->ior * p->ior);
+        u->k[3] = p->form == SC_CT_1982 ? 4.0f : 1.0f;
+        break;
+    default: break;
+    }
+}
+
+typedef brdf_weights (*brdf_model_fn)(int tier, const brdf_uniforms *u, const brdf_geometry *g);
+
+/* f (or f cos θ_i) where n·l > 0 and n·v > 0, else 0; the model's terms are dropped in unlit
+ * lanes, where they may be ∞ or NaN. */
+static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *const *in,
+                                float *const *out, size_t i, const brdf_uniforms *u)
+{
+    brdf_geometry g = brdf_geometry_of(tier, in, i);
+    vm lit = vm_and(vf_lt(vf_set1(0.0f), g.nl), vf_lt(vf_set1(0.0f), g.nv));
+    brdf_weights w = model(tier, u, &g);
+    vf scale = u->cos ? g.nl : vf_set1(1.0f);
+    for (int c = 0; c < 3; c++) {
+        vf f = vf_mul(w.w[0], vf_set1(u->col[0][c]));
+        f = vf_fma(w.w[1], vf_set1(u->col[1][c]), f);
+        f = vf_fma(w.w[2], vf_set1(u->col[2][c]), f);
+        vf_storeu(out[c] + i, vf_select(lit, vf_mul(f, scale), vf_set1(0.0f)));
+    }
+}
+
+#define BRDF_LANE(model, tier)                                                                    \
+    static SC_INLINE void brdf_##model##_##tier(const float *const *in, float *const *out,       \
+                                                size_t i, const sc_batch_scene *s, const void *u) \
+    {                                                                                             \
+        (void)s;                                                                                  \
+        brdf_lane(tier, model_##model, in, out, i, u);                                            \
+    }
+/* One loop per model, chosen once per call (params.model), so that each is straight-line. */
+#define BRDF_KERNEL(name, tier)                                                                   \
+    BRDF_LANE(lambert, tier)                                                                      \
+    BRDF_LANE(phong, tier)                                                                        \
+    BRDF_LANE(blinn_phong, tier)                                                                  \
+    BRDF_LANE(ward, tier)                                                                         \
+    BRDF_LANE(oren_nayar, tier)                                                                   \
+    BRDF_LANE(cook_torrance, tier)                                                                \
+    void K(name)(const sc_batch_args *a);                                                         \
+    void K(name)(const sc_batch_args *a)                                                          \
+    {                                                                                             \
+        static const lane_n_fn lanes[] = {brdf_lambert_##tier,    brdf_phong_##tier,              \
+                                          brdf_blinn_phong_##tier, brdf_ward_##tier,              \
+                                          brdf_oren_nayar_##tier, brdf_cook_torrance_##tier};     \
+        const sc_batch_brdf_params *p = a->params;                                                \
+        int model = p->model >= 0 && p->model <= SC_BRDF_COOK_TORRANCE ? p->model : 0;           \
+        brdf_uniforms u;                                                                          \
+        brdf_setup((sc_brdf_kind)model, p, &u);                                                   \
+        run_uniforms(a, 9, 3, lanes[model], &u);                                                  \
+    }
+BRDF_KERNEL(brdf_bits16, ACCURATE)
+BRDF_KERNEL(brdf_bits12, FAST12)
+BRDF_KERNEL(brdf_bits8, FAST8)

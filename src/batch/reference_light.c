@@ -1,0 +1,192 @@
+/* The double references of the attenuation, spot and BRDF batch kernels: the library's double
+ * functions (light.h, brdf.h) on the kernels' float inputs and parameters. */
+#include <math.h>
+
+#include "batch/reference.h"
+#include "batch/reference_light.h"
+#include "shadecalc/accuracy.h"
+#include "shadecalc/brdf.h"
+#include "shadecalc/light.h"
+
+static const double pi = 3.14159265358979323846;
+
+/* ---- attenuation and spot: relative bounds (out[1] = 1) ---- */
+
+static void atten_ref(sc_atten_kind kind, const sc_batch_args *a, size_t i, double *out)
+{
+    const sc_batch_atten_params *p = a->params;
+    sc_atten at = {kind, p->sc, p->sl, p->sq, p->r_start, p->r_end, p->f_max, p->f_c, p->r_c,
+                   p->s_e, p->r_max};
+    out[0] = sc_atten_eval(SC_DOUBLE, &at, (double)a->in[0][i]);
+    out[1] = 1.0;
+}
+
+static void spot_ref(sc_spot_kind kind, const sc_batch_args *a, size_t i, double *out)
+{
+    const sc_batch_spot_params *p = a->params;
+    sc_spot s = {kind, p->exponent, p->cutoff, p->inner, p->outer};
+    out[0] = sc_spot_eval(SC_DOUBLE, &s, (double)a->in[0][i]);
+    out[1] = 1.0;
+}
+
+#define REF_OF(name, fn, kind)                                                                    \
+    void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out) { fn(kind, a, i, out); }
+REF_OF(atten_none, atten_ref, SC_ATTEN_NONE)
+REF_OF(atten_invsq, atten_ref, SC_ATTEN_INVERSE_SQUARE)
+REF_OF(atten_clq, atten_ref, SC_ATTEN_CLQ)
+REF_OF(atten_window, atten_ref, SC_ATTEN_WINDOW)
+REF_OF(atten_pixar, atten_ref, SC_ATTEN_PIXAR)
+REF_OF(atten_windowed, atten_ref, SC_ATTEN_WINDOWED)
+REF_OF(spot_opengl, spot_ref, SC_SPOT_OPENGL)
+REF_OF(spot_directx, spot_ref, SC_SPOT_DIRECTX)
+REF_OF(spot_smoothstep, spot_ref, SC_SPOT_SMOOTHSTEP)
+
+/* ---- BRDFs ---- */
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* in[first..first+2] at element i as a unit vector; 0 if it is the zero vector */
+static int unit_input(const sc_batch_args *a, int first, size_t i, double v[3])
+{
+    for (int k = 0; k < 3; k++)
+        v[k] = (double)a->in[first + k][i];
+    double len = sqrt(dot3(v, v));
+    if (!(len > 0.0) || !isfinite(len))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        v[k] /= len;
+    return 1;
+}
+
+static void brdf_of(sc_brdf_kind kind, const sc_batch_brdf_params *p, sc_brdf *b)
+{
+    sc_brdf_init(b, kind);
+    b->form = p->form;
+    for (int c = 0; c < 3; c++) {
+        b->diff[c] = p->diff[c];
+        b->spec[c] = p->spec[c];
+        b->f0[c] = p->f0[c];
+    }
+    b->m = p->m;
+    b->ax = b->ay = p->alpha;
+    b->sigma = p->sigma;
+    b->ior = p->ior;
+    b->D = (sc_ndf)p->D;
+    b->G = (sc_masking)p->G;
+    b->F = (sc_fresnel)p->F;
+}
+
+/* The peak of a cosine lobe's normalization (phong, blinn-phong), 0 for the other models: an
+ * error δ in the lobe's cosine moves f by up to about m δ times it. */
+static double lobe_peak(const sc_brdf *b, double cos_i)
+{
+    if (b->kind == SC_BRDF_PHONG)
+        return b->form == SC_PHONG_NORMALIZED ? (b->m + 2.0) / (2.0 * pi)
+               : b->form == SC_PHONG_ORIGINAL ? 1.0 / (pi * fmax(cos_i, 1e-6))
+                                               : 1.0 / pi;
+    if (b->kind == SC_BRDF_BLINN_PHONG)
+        return b->form == SC_BLINN_PLAIN ? 1.0 : (b->m + 8.0) / (8.0 * pi);
+    return 0.0;
+}
+
+/* out[0..2] = f (times cos θ_i with the cos flag); out[3], the scale of the absolute allowance:
+ * c_diff/π plus the diffuse and specular terms plus the lobe's peak, times the same cosine. */
+static void brdf_ref(sc_brdf_kind kind, const sc_batch_args *a, size_t i, double *out)
+{
+    const sc_batch_brdf_params *p = a->params;
+    double l[3], v[3], n[3];
+    sc_frame frame;
+    for (int c = 0; c < 4; c++)
+        out[c] = 0.0;
+    if (!unit_input(a, 0, i, l) || !unit_input(a, 3, i, v) || !unit_input(a, 6, i, n) ||
+        sc_frame_make(n, NULL, &frame) != 0)
+        return;
+    sc_brdf b;
+    brdf_of(kind, p, &b);
+    sc_brdf_terms t;
+    sc_brdf_eval(SC_DOUBLE, &b, &frame, l, v, &t);
+    double weight = p->cos ? fmax(t.cos_i, 0.0) : 1.0, peak = lobe_peak(&b, t.cos_i);
+    for (int c = 0; c < 3; c++) {
+        out[c] = t.f[c] * weight;
+        double scale = b.diff[c] / pi + fabs(t.diffuse[c]) + t.specular[c] + b.spec[c] * peak;
+        out[3] = fmax(out[3], scale * weight);
+    }
+}
+
+void sc_batch_ref_brdf(const sc_batch_args *a, size_t i, double *out)
+{
+    const sc_batch_brdf_params *p = a->params;
+    int model = p->model >= 0 && p->model <= SC_BRDF_COOK_TORRANCE ? p->model : 0;
+    brdf_ref((sc_brdf_kind)model, a, i, out);
+}
+
+/* ---- generator ---- */
+
+static double unit_random(uint64_t *rng) /* uniform in [−1, 1) */
+{
+    return (double)(sc_accuracy_random(rng) >> 11) * 0x1p-52 - 1.0;
+}
+
+/* A random direction (uniform in the unit ball, then scaled by 2^k, |k| <= 30). */
+static void random_direction(uint64_t *rng, float *w)
+{
+    double d[3], dd;
+    do {
+        for (int k = 0; k < 3; k++)
+            d[k] = unit_random(rng);
+        dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    } while (!(dd > 1e-6 && dd <= 1.0));
+    int e = (int)(sc_accuracy_random(rng) % 61) - 30;
+    for (int k = 0; k < 3; k++)
+        w[k] = (float)ldexp(d[k], e);
+}
+
+static double cos_between(const float *a, const float *b)
+{
+    double ab = 0, aa = 0, bb = 0;
+    for (int k = 0; k < 3; k++) {
+        ab += (double)a[k] * b[k];
+        aa += (double)a[k] * a[k];
+        bb += (double)b[k] * b[k];
+    }
+    return ab / sqrt(aa * bb);
+}
+
+/* A direction w with |cos(n, w)| >= 2^-6 (the horizon, where f jumps to 0, is excluded as in
+ * sc_batch_gen_shade), turned above the horizon 7 times in 8. */
+static void direction_off_horizon(uint64_t *rng, const float *n, float *w)
+{
+    double c;
+    do {
+        random_direction(rng, w);
+        c = cos_between(n, w);
+    } while (!(fabs(c) >= 0x1p-6));
+    if (c < 0.0 && (sc_accuracy_random(rng) & 7) != 0)
+        for (int k = 0; k < 3; k++)
+            w[k] = -w[k];
+}
+
+void sc_batch_gen_brdf(uint64_t *rng, float *in)
+{
+    random_direction(rng, in + 6);
+    direction_off_horizon(rng, in + 6, in);
+    direction_off_horizon(rng, in + 6, in + 3);
+}
+
+/* ---- the rows' parameters ---- */
+
+const sc_batch_atten_params sc_batch_test_atten = {
+    .sc = 1.0f, .sl = 0.5f, .sq = 0.25f, .r_start = 1.0f, .r_end = 10.0f,
+    .f_max = 4.0f, .f_c = 1.0f, .r_c = 2.0f, .s_e = 2.0f, .r_max = 10.0f};
+
+const sc_batch_spot_params sc_batch_test_spot = {
+    .exponent = 8.0f, .cutoff = 45.0f, .inner = 20.0f, .outer = 40.0f};
+
+const sc_batch_brdf_params sc_batch_test_brdf = {
+    .model = SC_BRDF_COOK_TORRANCE, .form = SC_CT_WALTER, .D = SC_D_GGX,
+    .G = SC_G_SMITH_CORRELATED, .F = SC_F_SCHLICK, .diff = {0.8f, 0.5f, 0.2f},
+    .spec = {0.2f, 0.3f, 0.4f}, .f0 = {0.04f, 0.5f, 0.9f}, .m = 32.0f, .alpha = 0.3f,
+    .sigma = 0.5f, .ior = 1.5f};
