@@ -22,6 +22,15 @@ LOOP1(log2, log2f(x[i]))
 LOOP1(log, logf(x[i]))
 LOOP1(inversesqrt, 1.0f / sqrtf(x[i]))
 LOOP1(sqrt, sqrtf(x[i]))
+LOOP1(sin, sinf(x[i]))
+LOOP1(cos, cosf(x[i]))
+LOOP1(acos, acosf(x[i]))
+
+static void loop_atan2(const sc_batch_args *a)
+{
+    for (size_t i = 0; i < a->n; i++)
+        a->out[0][i] = atan2f(a->in[0][i], a->in[1][i]);
+}
 
 static void loop_pow(const sc_batch_args *a)
 {
@@ -142,6 +151,8 @@ static const struct {
     {"sqrt", loop_sqrt},       {"dot", loop_dot},
     {"reflect", loop_reflect}, {"normalize", loop_normalize},
     {"length", loop_length},   {"shade", loop_shade},
+    {"sin", loop_sin},         {"cos", loop_cos},
+    {"acos", loop_acos},       {"atan2", loop_atan2},
 };
 
 sc_batch_fn bench_libm_loop(const char *kernel)

@@ -57,6 +57,8 @@ static inline vi vi_sub(vi a, vi b) { return (vi)((uint32_t)a - (uint32_t)b); }
 static inline vi vi_and(vi a, vi b) { return a & b; }
 static inline vi vi_shl23(vi a) { return (vi)((uint32_t)a << 23); }
 static inline vi vi_sra23(vi a) { return a >= 0 ? a >> 23 : -1 - ((-1 - a) >> 23); }
+static inline vm vi_eq(vi a, vi b) { return a == b; }
+static inline vf vf_abs(vf a) { return fabsf(a); }
 
 static inline vf vf_rsqrt_est(vf x)
 {

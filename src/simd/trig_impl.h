@@ -1,2 +1,274 @@
 /* The sin, cos, acos, atan2 batch kernels, written once against the vector helpers and included
- * after src/simd/kernels_impl.h by each instruction set's file. */
+ * after src/simd/kernels_impl.h by each instruction set's file.
+ *
+ * u1: the algorithms of src/math/sincos.c, atan.c and asin.c in double lanes (same constants,
+ * same polynomials, same order of operations, so that without FMA the bits are those of sc_sinf
+ * etc.), rounded once; lanes with rare inputs go to the scalar built-in: sin/cos beyond the
+ * Cody–Waite range or not finite, atan2 of (0, 0), (±Inf, ±Inf) or NaN.
+ * Float tiers: Cody–Waite reduction by multiples of π/2 in two float parts, and polynomials
+ * fitted on the reduced interval (mpmath chebyfit; the fit error is in each comment). */
+
+/* ---- float tiers ---- */
+
+/* sin r / r as a polynomial in s = r², s in [0, (π/2 + 0.001)²]: 3 terms (fit error 8.8e-5),
+ * 5 terms (4.3e-9). */
+static const float sin_c3[3] = {0.00762579659446825f, -0.16601839683017208f, 0.9999111957241367f};
+static const float sin_c5[5] = {2.604920700948167e-06f, -0.00019808936593914233f,
+                                0.008333049100952087f, -0.1666665790378068f,
+                                0.9999999956715665f};
+
+/* π/2 = pio2_hi + pio2_lo + 1.7e-13: pio2_hi has 11 significant bits, so m·pio2_hi is exact
+ * for |m| < 2^13, and x − m·pio2_hi is exact where it matters (Sterbenz). */
+static const float pio2_hi = 0x1.922p+0f, pio2_lo = -0x1.2aeef4p-18f;
+static const float trig_inv_pi = 0x1.45f306p-2f; /* 1/π */
+/* |x| <= 1000: |m| <= 637, r = x − m·π/2 to about 2^-33 absolute */
+static const float fast_trig_limit = 1000.0f;
+
+/* (−1)^(j/2) sin(x − m·π/2) for the integer m nearest the reduction, |x| <= fast_trig_limit:
+ * r = x − m·π/2 in |r| <= π/2 (plus the rounding of m), sin r = r·q(r²). */
+static inline vf sin_of_reduced(vf x, vi m, vi j, const float *c, int n)
+{
+    vf mf = vi_to_vf(m);
+    vf r = vf_fma(mf, vf_set1(-pio2_hi), x);
+    r = vf_fma(mf, vf_set1(-pio2_lo), r);
+    vf s = vf_mul(r, poly(vf_mul(r, r), c, n));
+    vm negate = vi_eq(vi_and(j, vi_set1(2)), vi_set1(2));
+    return vf_select(negate, vf_mul(s, vf_set1(-1.0f)), s);
+}
+
+/* x clamped into the fast range (the lanes outside go to the scalar built-in afterwards) */
+static inline vf clamp_trig(vf x)
+{
+    return vf_min(vf_max(x, vf_set1(-fast_trig_limit)), vf_set1(fast_trig_limit));
+}
+
+static inline vm outside_trig(vf x) { return vm_or(vf_isnan(x), vf_lt(vf_set1(fast_trig_limit), vf_abs(x))); }
+
+/* sin x = (−1)^k sin(x − kπ), k = rint(x/π): m = 2k */
+static inline vf sin_fast(vf x, const float *c, int n)
+{
+    vf xc = clamp_trig(x);
+    vi k = vi_round(vf_mul(xc, vf_set1(trig_inv_pi)));
+    vi m = vi_add(k, k);
+    return fixup1(outside_trig(x), x, sin_of_reduced(xc, m, m, c, n), sc_sinf);
+}
+
+/* cos x = sin(x + π/2) = (−1)^(k+1) sin(x − (k + ½)π), k = rint(x/π − ½): m = 2k + 1 */
+static inline vf cos_fast(vf x, const float *c, int n)
+{
+    vf xc = clamp_trig(x);
+    vi k = vi_round(vf_sub(vf_mul(xc, vf_set1(trig_inv_pi)), vf_set1(0.5f)));
+    vi m = vi_add(vi_add(k, k), vi_set1(1));
+    return fixup1(outside_trig(x), x, sin_of_reduced(xc, m, vi_add(m, vi_set1(1)), c, n), sc_cosf);
+}
+
+static inline vf sin_bits22(vf x) { return sin_fast(x, sin_c5, 5); }
+static inline vf sin_bits12(vf x) { return sin_fast(x, sin_c3, 3); }
+static inline vf cos_bits22(vf x) { return cos_fast(x, sin_c5, 5); }
+static inline vf cos_bits12(vf x) { return cos_fast(x, sin_c3, 3); }
+BATCH1(sin_bits22, sin_bits22)
+BATCH1(sin_bits12, sin_bits12)
+BATCH1(cos_bits22, cos_bits22)
+BATCH1(cos_bits12, cos_bits12)
+
+/* π = pi_hi + pi_lo, π/2 and π/4 likewise, to about 2^-48 */
+static const float pi_hi = 0x1.921fb6p+1f, pi_lo = -0x1.777a5cp-24f;
+static const float half_pi_hi = 0x1.921fb6p+0f, half_pi_lo = -0x1.777a5cp-25f;
+static const float quarter_pi_hi = 0x1.921fb6p-1f, quarter_pi_lo = -0x1.777a5cp-26f;
+
+/* c_hi + c_lo − a, with the small part first (a >= 0 up to c) */
+static inline vf minus_from(vf a, float c_hi, float c_lo)
+{
+    return vf_add(vf_sub(vf_set1(c_lo), a), vf_set1(c_hi));
+}
+
+/* acos t / √(1 − t), t in [0, 1] (limit √2 at 1): 4 terms (fit error 7.8e-5 absolute, on
+ * values >= √2), 9 terms (4.1e-9). */
+static const float acos_c4[4] = {-0.018192852640625243f, 0.07344754367998303f,
+                                 -0.21180357102370512f, 1.5707106950252874f};
+static const float acos_c9[9] = {0.0006845318166245465f, -0.003974577703820064f,
+                                 0.011028380666317037f,  -0.02072766525325272f,
+                                 0.03257117017408731f,   -0.05059357388390752f,
+                                 0.08903013693965323f,   -0.2146011607316858f,
+                                 1.570796322643815f};
+
+/* acos |x| = √(1 − |x|)·p(|x|) (the form of Abramowitz & Stegun 4.4.45, refitted), and
+ * acos x = π − acos |x| for x < 0. |x| > 1 and NaN give NaN through the square root. */
+static inline vf acos_fast(vf x, const float *c, int n)
+{
+    vf t = vf_abs(x);
+    vf v = vf_mul(vf_sqrt(vf_sub(vf_set1(1.0f), t)), poly(t, c, n));
+    return vf_select(vf_lt(x, vf_set1(0.0f)), minus_from(v, pi_hi, pi_lo), v);
+}
+
+static inline vf acos_bits22(vf x) { return acos_fast(x, acos_c9, 9); }
+static inline vf acos_bits12(vf x) { return acos_fast(x, acos_c4, 4); }
+BATCH1(acos_bits22, acos_bits22)
+BATCH1(acos_bits12, acos_bits12)
+
+/* atan u / u as a polynomial in s = u², s in [0, 1/4]: 3 terms (fit error 5.1e-5), 6 terms
+ * (5.0e-9). The reduction keeps |u| <= tan(π/8); the interval reaches |u| = 1/2, where a
+ * threshold test rounded in the subnormals (n = 1, d = 2 units) can leave u. */
+static const float atan_c3[3] = {0.1561232456726872f, -0.3294578767552555f, 0.9999467415707246f};
+static const float atan_c6[6] = {-0.050662412913701174f, 0.10115525048521459f,
+                                 -0.14164254995259587f,  0.1999310497045346f,
+                                 -0.33333187824070487f,  0.9999999949625897f};
+static const float cot_pi_8_f = 2.414213562373095f; /* 1/tan(π/8) */
+
+/* The sign bit of y on a >= 0 (the integer add sets bit 31, which is clear in a). */
+static inline vf with_sign_of(vf a, vf y)
+{
+    return vi_as_vf(vi_add(vf_as_vi(a), vi_and(vf_as_vi(y), vf_as_vi(vf_set1(-0.0f)))));
+}
+
+/* atan(n/d) for 0 <= n <= d: above tan(π/8), π/4 + atan((n − d)/(n + d)), which cancels
+ * down to 0.39 (hence π/4 in two parts); then atan u = u·q(u²). One division. */
+static inline vf atan_ratio(vf n, vf d, const float *c, int k)
+{
+    vm big = vf_lt(d, vf_mul(n, vf_set1(cot_pi_8_f)));
+    vf u = vf_div(vf_select(big, vf_sub(n, d), n), vf_select(big, vf_add(n, d), d));
+    vf base_hi = vf_select(big, vf_set1(quarter_pi_hi), vf_set1(0.0f));
+    vf base_lo = vf_select(big, vf_set1(quarter_pi_lo), vf_set1(0.0f));
+    return vf_add(vf_fma(u, poly(vf_mul(u, u), c, k), base_lo), base_hi);
+}
+
+/* atan2(y, x) from the angle of (|x|, |y|) in [0, π/2], placed in its quadrant. Lanes with
+ * NaN, (0, 0), or a magnitude beyond 2^126 (where n + d could overflow; the infinities) go to
+ * the scalar built-in. */
+static inline vf atan2_fast(vf y, vf x, const float *c, int k)
+{
+    vf ax = vf_abs(x), ay = vf_abs(y);
+    vf n = vf_min(ax, ay), d = vf_max(ax, ay);
+    vf a = atan_ratio(n, d, c, k);
+    a = vf_select(vf_lt(ax, ay), minus_from(a, half_pi_hi, half_pi_lo), a);
+    a = vf_select(vf_lt(x, vf_set1(0.0f)), minus_from(a, pi_hi, pi_lo), a);
+    vm special = vm_or(vm_or(vf_isnan(x), vf_isnan(y)), vf_eq(d, vf_set1(0.0f)));
+    special = vm_or(special, vf_lt(vf_set1(0x1p126f), d));
+    return fixup2(special, y, x, with_sign_of(a, y), sc_atan2f);
+}
+
+static inline vf atan2_bits22(vf y, vf x) { return atan2_fast(y, x, atan_c6, 6); }
+static inline vf atan2_bits12(vf y, vf x) { return atan2_fast(y, x, atan_c3, 3); }
+BATCH2(atan2_bits22, atan2_bits22)
+BATCH2(atan2_bits12, atan2_bits12)
+
+#ifdef SIMD_HAS_DOUBLE
+/* ---- double lanes: the u1 tier ---- */
+
+static const double two_over_pi_d = 0x1.45f306dc9c883p-1;
+static const double pio2_1 = 0x1.921fb544p+0;       /* π/2, first 33 bits */
+static const double pio2_2 = 0x1.0b4611a6p-34;      /* next 33 bits */
+static const double pio2_3 = 0x1.3198a2e037073p-69; /* π/2 − pio2_1 − pio2_2, to 2^-122 */
+/* the smallest float >= 2^19·π/2, the Cody–Waite limit of sincos.c (|k| < 2^20) */
+static const float cody_waite_limit_f = 0x1.921fb6p+19f;
+
+/* sin(r)/r = Σ (−1)^j r^(2j)/(2j+1)!, j = 0..7, and cos(r) = Σ (−1)^j r^(2j)/(2j)!, j = 0..8:
+ * the Taylor series of sincos.c, truncated below 2^-55 on |r| <= π/4. */
+static const double sin_taylor[8] = {1.0,          -1.0 / 6,         1.0 / 120,
+                                     -1.0 / 5040,  1.0 / 362880,     -1.0 / 39916800,
+                                     1.0 / 6227020800.0, -1.0 / 1307674368000.0};
+static const double cos_taylor[9] = {1.0,          -1.0 / 2,        1.0 / 24,
+                                     -1.0 / 720,   1.0 / 40320,     -1.0 / 3628800,
+                                     1.0 / 479001600, -1.0 / 87178291200.0,
+                                     1.0 / 20922789888000.0};
+
+static inline vdm quadrant_bit(vl q, long long bit)
+{
+    return vl_eq(vl_and(q, vl_set1(bit)), vl_set1(bit));
+}
+
+/* sin(x + shift·π/2) for |x| < 2^19·π/2 (sincos.c): k = rint(x·2/π) by the 1.5·2^52 shifter,
+ * whose low bits hold k mod 4; r = x − k·π/2 with three parts; the quadrant selects ±sin r,
+ * ±cos r. */
+static inline vd sin_shifted_d(vd x, long long shift)
+{
+    const double shifter = 0x1.8p52;
+    vd shifted = vd_add(vd_mul(x, vd_set1(two_over_pi_d)), vd_set1(shifter));
+    vd k = vd_sub(shifted, vd_set1(shifter));
+    vl quadrant = vl_add(vd_as_vl(shifted), vl_set1(shift));
+    vd r = vd_sub(vd_sub(vd_sub(x, vd_mul(k, vd_set1(pio2_1))), vd_mul(k, vd_set1(pio2_2))),
+                  vd_mul(k, vd_set1(pio2_3)));
+    vd r2 = vd_mul(r, r);
+    vd v = vd_select(quadrant_bit(quadrant, 1), vd_horner(r2, cos_taylor, 9),
+                     vd_mul(r, vd_horner(r2, sin_taylor, 8)));
+    return vd_select(quadrant_bit(quadrant, 2), vd_mul(v, vd_set1(-1.0)), v);
+}
+
+static inline vd sin_d(vd x) { return sin_shifted_d(x, 0); }
+static inline vd cos_d(vd x) { return sin_shifted_d(x, 1); }
+
+static inline vm outside_cody_waite(vf x)
+{
+    return vm_or(vf_isnan(x), vf_le(vf_set1(cody_waite_limit_f), vf_abs(x)));
+}
+
+static inline vf sin_u1(vf x) { return fixup1(outside_cody_waite(x), x, on_doubles(x, sin_d), sc_sinf); }
+static inline vf cos_u1(vf x) { return fixup1(outside_cody_waite(x), x, on_doubles(x, cos_d), sc_cosf); }
+
+static const double pi_d = 3.14159265358979323846;
+static const double sqrt3_d = 1.73205080756887729353;
+static const double tan_pi_12_d = 0.26794919243112270647;
+
+/* (−1)^j/(2j+1), j = 0..15: atan(u)/u = Σ (−1)^j u^(2j)/(2j+1) (atan.c) */
+static const double atan_series[16] = {1.0,      -1.0 / 3,  1.0 / 5,  -1.0 / 7,
+                                       1.0 / 9,  -1.0 / 11, 1.0 / 13, -1.0 / 15,
+                                       1.0 / 17, -1.0 / 19, 1.0 / 21, -1.0 / 23,
+                                       1.0 / 25, -1.0 / 27, 1.0 / 29, -1.0 / 31};
+
+/* atan t for 0 <= t <= 1: above tan(π/12), π/6 + atan((√3 t − 1)/(√3 + t)) (atan.c) */
+static inline vd atan_unit_d(vd t)
+{
+    vdm big = vd_lt(vd_set1(tan_pi_12_d), t);
+    vd shifted = vd_div(vd_sub(vd_mul(vd_set1(sqrt3_d), t), vd_set1(1.0)), vd_add(vd_set1(sqrt3_d), t));
+    vd u = vd_select(big, shifted, t);
+    vd base = vd_select(big, vd_set1(pi_d / 6.0), vd_set1(0.0));
+    return vd_fma(u, vd_horner(vd_mul(u, u), atan_series, 16), base);
+}
+
+static inline vd abs_d(vd x) { return vl_as_vd(vl_and(vd_as_vl(x), vl_set1(0x7fffffffffffffffLL))); }
+
+/* |atan2(y, x)| in [0, π] (sc_k_atan2 without its special cases): the ratio of the smaller to
+ * the larger magnitude, then the quadrant. x < 0 stands for signbit(x): they differ at x = −0,
+ * where the angle is π/2 and π − π/2 = π/2 exactly. */
+static inline vd angle_d(vd y, vd x)
+{
+    vd ay = abs_d(y), ax = abs_d(x);
+    vdm steep = vd_lt(ax, ay);
+    vd a = atan_unit_d(vd_div(vd_select(steep, ax, ay), vd_select(steep, ay, ax)));
+    a = vd_select(steep, vd_sub(vd_set1(pi_d / 2.0), a), a);
+    return vd_select(vd_lt(x, vd_set1(0.0)), vd_sub(vd_set1(pi_d), a), a);
+}
+
+static inline vd atan2_d(vd y, vd x)
+{
+    vl sign = vl_and(vd_as_vl(y), vd_as_vl(vd_set1(-0.0)));
+    return vl_as_vd(vl_or(vd_as_vl(angle_d(y, x)), sign));
+}
+
+/* acos x = atan2(√((1 − x)(1 + x)), x) (asin.c); NaN for |x| > 1 through the square root */
+static inline vd acos_d(vd x)
+{
+    vd one = vd_set1(1.0);
+    return angle_d(vd_sqrt(vd_mul(vd_sub(one, x), vd_add(one, x))), x);
+}
+
+static inline vf atan2_u1(vf y, vf x)
+{
+    vm zeros = vm_and(vf_eq(x, vf_set1(0.0f)), vf_eq(y, vf_set1(0.0f)));
+    vm infinities = vm_and(vf_eq(vf_abs(x), vf_set1(INFINITY)), vf_eq(vf_abs(y), vf_set1(INFINITY)));
+    vm special = vm_or(vm_or(vf_isnan(x), vf_isnan(y)), vm_or(zeros, infinities));
+    return fixup2(special, y, x, on_doubles2(y, x, atan2_d), sc_atan2f);
+}
+
+static inline vf acos_u1(vf x) { return on_doubles(x, acos_d); }
+
+BATCH1(sin_u1, sin_u1)
+BATCH1(cos_u1, cos_u1)
+BATCH1(acos_u1, acos_u1)
+BATCH2(atan2_u1, atan2_u1)
+#else
+BATCH1(sin_u1, sc_sinf)
+BATCH1(cos_u1, sc_cosf)
+BATCH1(acos_u1, sc_acosf)
+BATCH2(atan2_u1, sc_atan2f)
+#endif

@@ -49,6 +49,8 @@ static inline vi vi_sub(vi a, vi b) { return _mm256_sub_epi32(a, b); }
 static inline vi vi_and(vi a, vi b) { return _mm256_and_si256(a, b); }
 static inline vi vi_shl23(vi a) { return _mm256_slli_epi32(a, 23); }
 static inline vi vi_sra23(vi a) { return _mm256_srai_epi32(a, 23); }
+static inline vm vi_eq(vi a, vi b) { return _mm256_castsi256_ps(_mm256_cmpeq_epi32(a, b)); }
+static inline vf vf_abs(vf a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a); }
 
 /* doubles: the low and high halves of a vf */
 static inline vd vd_from_lo(vf x) { return _mm256_cvtps_pd(_mm256_castps256_ps128(x)); }
@@ -78,5 +80,6 @@ static inline vl vl_and(vl a, vl b) { return _mm256_and_si256(a, b); }
 static inline vl vl_or(vl a, vl b) { return _mm256_or_si256(a, b); }
 static inline vl vl_shl52(vl a) { return _mm256_slli_epi64(a, 52); }
 static inline vl vl_shr52(vl a) { return _mm256_srli_epi64(a, 52); }
+static inline vdm vl_eq(vl a, vl b) { return _mm256_castsi256_pd(_mm256_cmpeq_epi64(a, b)); }
 
 #endif

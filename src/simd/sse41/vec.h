@@ -49,6 +49,8 @@ static inline vi vi_sub(vi a, vi b) { return _mm_sub_epi32(a, b); }
 static inline vi vi_and(vi a, vi b) { return _mm_and_si128(a, b); }
 static inline vi vi_shl23(vi a) { return _mm_slli_epi32(a, 23); }
 static inline vi vi_sra23(vi a) { return _mm_srai_epi32(a, 23); }
+static inline vm vi_eq(vi a, vi b) { return _mm_castsi128_ps(_mm_cmpeq_epi32(a, b)); }
+static inline vf vf_abs(vf a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
 
 static inline vd vd_from_lo(vf x) { return _mm_cvtps_pd(x); }
 static inline vd vd_from_hi(vf x) { return _mm_cvtps_pd(_mm_movehl_ps(x, x)); }
@@ -74,5 +76,6 @@ static inline vl vl_and(vl a, vl b) { return _mm_and_si128(a, b); }
 static inline vl vl_or(vl a, vl b) { return _mm_or_si128(a, b); }
 static inline vl vl_shl52(vl a) { return _mm_slli_epi64(a, 52); }
 static inline vl vl_shr52(vl a) { return _mm_srli_epi64(a, 52); }
+static inline vdm vl_eq(vl a, vl b) { return _mm_castsi128_pd(_mm_cmpeq_epi64(a, b)); }
 
 #endif
