@@ -61,7 +61,6 @@ typedef struct {
     size_t sizes[4];
     int n_sizes;
     int repeat;
-    int progress;           /* draw a progress bar on stderr */
 } bench_options;
 
 /* Runs every selected case; *rows is malloc'ed. Returns 0, or -1 out of memory. */

@@ -8,6 +8,7 @@
 
 #include "bench/bench.h"
 #include "bench/timer.h"
+#include "cli/progress.h"
 
 enum { ACCURACY_SAMPLE = 1 << 16, MIN_SAMPLE_NS = 200000, MAX_ROWS = 4096 };
 
@@ -190,19 +191,13 @@ typedef struct {
     const bench_machine *m;
     bench_row *rows;
     int n_rows, done, total;
+    sc_progress bar;
 } bench_state;
 
 static void progress(bench_state *st, const char *what)
 {
     st->done++;
-    if (!st->o->progress)
-        return;
-    int width = 30, filled = st->total ? st->done * width / st->total : width;
-    fprintf(stderr, "\r[%.*s%*s] %d/%d %-40.40s", filled, "##############################",
-            width - filled, "", st->done, st->total, what);
-    if (st->done == st->total)
-        fprintf(stderr, "\r%*s\r", width + 60, "");
-    fflush(stderr);
+    sc_progress_update(&st->bar, st->total ? (double)st->done / st->total : 1.0, what);
 }
 
 static bench_row *add_row(bench_state *st, const char *kernel, const char *isa, const char *tier,
@@ -372,19 +367,22 @@ int bench_run(const bench_options *o, const bench_machine *m, bench_row **rows, 
 {
     const char *kernels[64];
     int n_kernels = kernel_list(o, kernels);
-    bench_state st = {o, m, calloc(MAX_ROWS, sizeof(bench_row)), 0, 0, 0};
+    bench_state st = {o, m, calloc(MAX_ROWS, sizeof(bench_row)), 0, 0, 0, {0}};
     if (!st.rows)
         return -1;
+    sc_progress_start(&st.bar, "bench", 0.0);
     st.total = count_rows(o, kernels, n_kernels);
     for (int s = 0; s < o->n_sizes; s++)
         for (int k = 0; k < n_kernels; k++) {
             int shade = strcmp(kernels[k], "shade") == 0;
             for (int c = 0; c < (shade ? N_SCENES : 1); c++)
                 if (measure_group(&st, kernels[k], shade ? &scenes[c] : NULL, o->sizes[s]) != 0) {
+                    sc_progress_clear(&st.bar);
                     free(st.rows);
                     return -1;
                 }
         }
+    sc_progress_clear(&st.bar);
     *rows = st.rows;
     *n_rows = st.n_rows;
     return 0;

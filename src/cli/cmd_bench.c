@@ -3,7 +3,6 @@
 #include <getopt.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "bench/bench.h"
 #include "cli/cli.h"
@@ -182,7 +181,7 @@ static int parse_options(int argc, char **argv, options *o)
 
 static int run(int argc, char **argv)
 {
-    options o = {{{0}, 0, 0, {0}, 0, {4096, 4194304}, 2, 7, 0}, 0, 0};
+    options o = {{{0}, 0, 0, {0}, 0, {4096, 4194304}, 2, 7}, 0, 0};
     int status = parse_options(argc, argv, &o);
     if (status != SC_EXIT_OK)
         return status < 0 ? SC_EXIT_OK : status;
@@ -190,7 +189,6 @@ static int run(int argc, char **argv)
         bench_list(stdout, o.format);
         return SC_EXIT_OK;
     }
-    o.run.progress = isatty(STDERR_FILENO);
     if (!bench_sleef_available())
         fprintf(stderr, "bench: SLEEF not found at build time (or no AVX2 here): no sleef-avx2 "
                         "comparison rows (install libsleef-dev and rebuild to get them)\n");

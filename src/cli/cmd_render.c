@@ -5,10 +5,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/progress.h"
 #include "cli/setup.h"
 #include "shadecalc/render.h"
 
@@ -389,36 +388,10 @@ static void make_camera(const render_options *o, const shade_setup *s, const sc_
         memcpy(cam->eye, o->have_eye ? o->eye : s->eye, sizeof cam->eye);
 }
 
-typedef struct {
-    const char *label;
-    struct timespec start;
-    int tty, shown;
-} progress_bar;
-
-static double seconds_since(const struct timespec *t0)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)(t.tv_sec - t0->tv_sec) + 1e-9 * (double)(t.tv_nsec - t0->tv_nsec);
-}
-
 /* Drawn on a terminal once a render has taken half a second. */
 static void progress_tick(void *ctx, int done, int total)
 {
-    progress_bar *p = ctx;
-    if (!p->tty || (!p->shown && seconds_since(&p->start) < 0.5))
-        return;
-    int width = 30, filled = width * done / total;
-    fprintf(stderr, "\r%-20s [%.*s%*s] %3d%%", p->label, filled,
-            "##############################", width - filled, "", 100 * done / total);
-    p->shown = 1;
-}
-
-static void progress_clear(progress_bar *p)
-{
-    if (p->shown)
-        fprintf(stderr, "\r%*s\r", 60, "");
-    p->shown = 0;
+    sc_progress_update(ctx, (double)done / total, NULL);
 }
 
 /* Writes img with the command line and one more string attribute in the header. */
@@ -452,13 +425,13 @@ static int write_image(const sc_framebuffer *fb, const render_options *o, const 
 static int draw(sc_render_params *rp, const char *label, sc_framebuffer *fb, double *seconds)
 {
     char err[512];
-    progress_bar bar = {label, {0, 0}, isatty(2), 0};
-    clock_gettime(CLOCK_MONOTONIC, &bar.start);
+    sc_progress bar;
+    sc_progress_start(&bar, label, 0.5);
     rp->progress = progress_tick;
     rp->progress_ctx = &bar;
     int bad = sc_render(rp, fb, err, sizeof err);
-    *seconds = seconds_since(&bar.start);
-    progress_clear(&bar);
+    *seconds = sc_progress_seconds(&bar);
+    sc_progress_clear(&bar);
     if (bad) {
         sc_error("%s", err);
         return SC_EXIT_RUNTIME;

@@ -6,10 +6,10 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/progress.h"
 #include "cli/sweep_cli.h"
 #include "shadecalc/file.h"
 
@@ -288,32 +288,13 @@ static int make_plan(sweep_options *o, const sc_sweep_grid *g, sweep_plan *plan)
 
 /* ---- progress on a terminal ---- */
 
-typedef struct {
-    struct timespec start;
-    int shown;
-} progress_bar;
-
-static double seconds_since(const struct timespec *t)
-{
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - t->tv_sec) + 1e-9 * (double)(now.tv_nsec - t->tv_nsec);
-}
-
 /* Drawn once the sweep has run for a second, so that short sweeps print nothing. */
-static void show_progress(void *user, uint64_t done, uint64_t total)
+static void show_progress(sc_progress *bar, uint64_t done, uint64_t total)
 {
-    progress_bar *bar = user;
-    if (!bar->shown && seconds_since(&bar->start) < 1.0)
-        return;
-    int width = 40, filled = (int)((double)width * (double)done / (double)total);
-    fprintf(stderr, "\rsweep [%.*s%*s] %3d%% %llu/%llu rows", filled,
-            "########################################", width - filled, "",
-            (int)(100.0 * (double)done / (double)total), (unsigned long long)done,
-            (unsigned long long)total);
-    bar->shown = 1;
-    if (done == total)
-        fputc('\n', stderr);
+    char rows[48];
+    snprintf(rows, sizeof rows, "%llu/%llu rows", (unsigned long long)done,
+             (unsigned long long)total);
+    sc_progress_update(bar, (double)done / (double)total, rows);
 }
 
 /* ---- running ---- */
@@ -337,7 +318,7 @@ static void table_names(const sc_sweep_grid *g, const sweep_plan *plan, const ch
 typedef struct {
     const sweep_plan *plan;
     sweep_pictures *pictures;
-    progress_bar *bar;
+    sc_progress *bar;
 } job_context;
 
 static int job_eval(void *user, int worker, const double *vars, double *results, char *err,
@@ -374,8 +355,8 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
         sc_error("%s", err);
         return SC_EXIT_RUNTIME;
     }
-    progress_bar bar = {.shown = 0};
-    clock_gettime(CLOCK_MONOTONIC, &bar.start);
+    sc_progress bar;
+    sc_progress_start(&bar, "sweep", 1.0);
     job_context ctx = {plan, pictures, &bar};
     sc_sweep_job job = {g, plan->n_results, job_eval, &ctx,
                         o->pictures.plot || o->pictures.image ? job_consume : NULL,
@@ -387,8 +368,7 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
     if (status == SC_SWEEP_OK)
         status = sc_sweep_run(&job, err, sizeof err);
     int saved = errno;
-    if (bar.shown && status != SC_SWEEP_OK)
-        fputc('\n', stderr);
+    sc_progress_clear(&bar);
     if (status == SC_SWEEP_OK) {
         if (!file || sc_atomic_commit(file, err, sizeof err) == 0)
             return SC_EXIT_OK;
