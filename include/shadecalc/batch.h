@@ -108,7 +108,9 @@ typedef struct {
 /* Arguments of every kernel: in[i] are the input arrays, out[j] the output arrays, scene the
  * shading uniforms (NULL for the others). Inputs by kernel:
  *   exp2 exp log2 log inversesqrt sqrt   x                  out: value
+ *   sin cos acos                         x                  out: value
  *   pow                                  x y                out: value
+ *   atan2                                y x                out: value
  *   dot                                  ax ay az bx by bz  out: value
  *   reflect                              Ix Iy Iz Nx Ny Nz  out: x y z
  *   normalize                            x y z              out: x y z
