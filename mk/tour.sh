@@ -45,7 +45,7 @@ mkdir -p "$compare_dir"
 step render --compare --size 256x256 --output-dir "$compare_dir"
 echo "(images and error maps: $compare_dir/*.exr)"
 
-echo; echo "== Sweeps: the lecture's figures as tables, SVG plots and an EXR image (issue 5) =="
+echo; echo "== Sweeps: the lecture's figures as tables, SVG plots and an EXR image =="
 out=${SHADECALC_OUT:-out}
 mkdir -p "$out"
 step sweep --var x=0:1:6 'pow(x, 32.0)'
@@ -58,3 +58,6 @@ step sweep --var theta_h=0:90:91 --var theta_d=0:90:91 --brdf 'cook-torrance alp
 echo "(plots, tables and the theta_h x theta_d image slice, written to $out/:"
 ls "$out"
 echo ")"
+
+echo; echo "== Speed against accuracy: the shading kernel's tiers on this CPU (make bench: all kernels) =="
+step bench --n 4096 --repeat 3 --tier accurate,bits12,bits8 shade
