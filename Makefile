@@ -45,6 +45,7 @@ ifneq ($(filter x86_64 amd64 i686 i386,$(ARCH)),)
 $(BUILD)/obj/src/simd/avx2/%.o: ISAFLAGS := -mavx2 -mfma -mf16c
 $(BUILD)/obj/src/simd/sse41/%.o: ISAFLAGS := -msse4.1
 $(BUILD)/obj/bench/sleef_avx2.o: ISAFLAGS := -mavx2 -mfma
+$(BUILD)/obj/bench/peak_avx2.o: ISAFLAGS := -mavx2 -mfma
 endif
 
 # SLEEF (libsleef-dev) is optional: when found, `shadecalc bench` also times its AVX2 functions.

@@ -29,12 +29,15 @@ int bench_sleef_loops(const char *kernel, const bench_sleef **out);
 
 typedef struct {
     char cpu[128];
-    double bandwidth;     /* bytes per ns, measured: read + written by a stream loop */
-    double scalar_ops_ns; /* independent scalar float add/mul per ns, measured */
+    double bandwidth; /* bytes per ns, measured: read + written by a stream loop */
+    double lane_ops_ns; /* peak float lane operations per ns at 8 lanes (an FMA counts one):
+                         * AVX2 FMA chains, or scalar chains times 8 without AVX2 */
 } bench_machine;
 
 void bench_machine_measure(bench_machine *m);
 int bench_isa_width(sc_isa isa);
+/* AVX2 FMA lane operations per ns (bench/peak_avx2.c); 0 without AVX2. */
+double bench_peak_avx2(void);
 
 /* ---- cases: kernel × isa × tier (× scene for shade) × size ---- */
 

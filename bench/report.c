@@ -50,30 +50,41 @@ void bench_list(FILE *out, int format)
 
 static void table_row(FILE *out, const bench_row *r)
 {
-    char bound[32] = "-";
+    char bound[32] = "-", roof[16] = "-";
     if (r->bound_ulp > 0)
         snprintf(bound, sizeof bound, "%g ulp", r->bound_ulp);
     else if (r->bound_rel > 0)
         snprintf(bound, sizeof bound, "2^%d", (int)lround(log2(r->bound_rel)));
+    if (isfinite(r->roofline_fraction))
+        snprintf(roof, sizeof roof, "%.0f%%", 100.0 * r->roofline_fraction);
     fprintf(out,
-            "%-11s %-17s %-6s %-8s %8zu %8.3f %8.3f %8.3f %7.1f %6.2f %6.2f %9.3g %7.3f %9.2e %-8s "
-            "%5.0f%% %s\n",
+            "%-11s %-17s %-10s %-8s %8zu %8.3f %8.3f %8.3f %7.1f %6.2f %6.2f %9.3g %7.3f %9.2e %-8s "
+            "%6s %s\n",
             r->kernel, r->scene[0] ? r->scene : "-", r->isa, r->tier, r->n, r->ns_per_elem,
             r->ns_min, r->ns_max, 1e3 / r->ns_per_elem, r->speedup_vs_scalar, r->speedup_vs_libm,
             r->err.max_ulp, r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0,
-            r->err.max_rel, bound, 100.0 * r->roofline_fraction, r->pareto ? "*" : "");
+            r->err.max_rel, bound, roof, r->pareto ? "*" : "");
+}
+
+/* a number, or nothing where it is not defined */
+static void csv_number(FILE *out, double v, const char *after)
+{
+    if (isfinite(v))
+        fprintf(out, "%.6g", v);
+    fputs(after, out);
 }
 
 static void csv_row(FILE *out, const bench_row *r)
 {
-    fprintf(out, "%s,%s,%s,%s,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", r->kernel,
+    fprintf(out, "%s,%s,%s,%s,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,", r->kernel,
             r->scene, r->isa, r->tier, r->n, r->ns_per_elem, r->ns_min, r->ns_max,
             r->speedup_vs_scalar, r->speedup_vs_libm, r->err.max_ulp,
             r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0, r->err.max_rel,
-            r->err.max_abs, r->roofline_ns);
-    if (r->bound_ulp > 0)
-        fprintf(out, "%g", r->bound_ulp);
-    fprintf(out, ",%.6g,%d\n", r->roofline_fraction, r->pareto);
+            r->err.max_abs);
+    csv_number(out, r->roofline_ns, ",");
+    csv_number(out, r->bound_ulp > 0 ? r->bound_ulp : NAN, ",");
+    csv_number(out, r->roofline_fraction, ",");
+    fprintf(out, "%d\n", r->pareto);
 }
 
 static void json_number(FILE *out, const char *key, double v, int comma)
@@ -113,8 +124,8 @@ void bench_report(FILE *out, int format, const bench_machine *m, const bench_row
 {
     if (format == BENCH_JSON) {
         fprintf(out, "{\n  \"machine\": {\"cpu\": \"%s\", \"stream_bandwidth_gb_s\": %.3g, "
-                     "\"scalar_fp_ops_per_ns\": %.3g},\n  \"rows\": [\n",
-                m->cpu, m->bandwidth, m->scalar_ops_ns);
+                     "\"peak_lane_ops_per_ns\": %.3g},\n  \"rows\": [\n",
+                m->cpu, m->bandwidth, m->lane_ops_ns);
         for (int i = 0; i < n; i++)
             json_row(out, &rows[i], i == n - 1);
         fprintf(out, "  ]\n}\n");
@@ -128,9 +139,10 @@ void bench_report(FILE *out, int format, const bench_machine *m, const bench_row
             csv_row(out, &rows[i]);
         return;
     }
-    fprintf(out, "# %s; stream bandwidth %.3g GB/s; scalar FP %.3g ops/ns (x4 SSE4.1, x8 AVX2)\n",
-            m->cpu, m->bandwidth, m->scalar_ops_ns);
-    fprintf(out, "%-11s %-17s %-6s %-8s %8s %8s %8s %8s %7s %6s %6s %9s %7s %9s %-8s %6s %s\n",
+    fprintf(out, "# %s; stream bandwidth %.3g GB/s; peak %.3g float lane-ops/ns at 8 lanes (an FMA "
+                 "counts one)\n",
+            m->cpu, m->bandwidth, m->lane_ops_ns);
+    fprintf(out, "%-11s %-17s %-10s %-8s %8s %8s %8s %8s %7s %6s %6s %9s %7s %9s %-8s %6s %s\n",
             "kernel", "scene", "isa", "tier", "n", "ns/elem", "min", "max", "Melem/s", "xscal",
             "xlibm", "max_ulp", "mean", "max_rel", "bound", "roof", "pareto");
     for (int i = 0; i < n; i++)
