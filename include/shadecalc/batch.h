@@ -100,7 +100,8 @@ typedef struct {
     float m;                       /* phong, blinn-phong exponent, >= 0 */
     float alpha;                   /* ward, cook-torrance roughness (taken >= 10^-4) */
     float sigma;                   /* oren-nayar σ, radians */
-    float ior;                     /* exact Fresnel η > 0 */
+    float ior;                     /* exact Fresnel η >= 1 (η < 1 runs, but near the critical
+                                      angle F's infinite slope defeats every float tier) */
 } sc_batch_brdf_params;
 
 /* ---- kernels ---- */
@@ -155,7 +156,7 @@ typedef struct {
     const char *domain; /* the input domain, as the man page states it */
     double lo[2], hi[2];/* random inputs for x and y (one-argument kernels), or: */
     sc_batch_gen_fn gen;/* the generator of vector inputs (NULL for x, y kernels) */
-    double ops;         /* arithmetic operations per element, per light for shade */
+    double ops;         /* AVX2 arithmetic instructions per vector of 8 elements (roofline) */
     const void *params; /* the parameters the tests and the bench run it with, or NULL */
 } sc_batch_entry;
 

@@ -1,0 +1,312 @@
+/* The attenuation, spot and BRDF batch kernels beyond the parameters of their table rows
+ * (tests/unit/test_batch.c checks those on 10^6 inputs): every BRDF model, form, D × G × F
+ * combination, roughness and the cos flag, and the edge rules of light.h (r = 0 finite,
+ * f_c = f_max flat, r_start = r_end a step, cutoff 180, inner = outer a hard edge, exponent 0),
+ * on every tier and instruction set, against the library's double functions (the references of
+ * src/batch/reference_light.c) within each row's stated bound. */
+#include <float.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "shadecalc/batch.h"
+#include "shadecalc/brdf.h"
+
+enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too */
+
+static const double pi = 3.14159265358979323846;
+
+static uint64_t rng = 0x2545F4914F6CDD1DULL;
+
+typedef struct {
+    float *in[9], *out[3];
+    double *ref; /* 4 per element */
+    sc_batch_args args;
+} run_buffers;
+
+static void buffers_alloc(run_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
+{
+    memset(b, 0, sizeof *b);
+    for (int j = 0; j < e->n_in; j++)
+        assert_non_null(b->args.in[j] = b->in[j] = malloc(n * sizeof(float)));
+    for (int j = 0; j < e->n_out; j++)
+        assert_non_null(b->args.out[j] = b->out[j] = malloc(n * sizeof(float)));
+    assert_non_null(b->ref = malloc(n * 4 * sizeof(double)));
+    b->args.n = n;
+    b->args.params = params;
+}
+
+static void buffers_release(run_buffers *b)
+{
+    for (int j = 0; j < 9; j++)
+        free(b->in[j]);
+    for (int j = 0; j < 3; j++)
+        free(b->out[j]);
+    free(b->ref);
+}
+
+/* Runs every tier and instruction set of `kernel` on the inputs in b (references already in
+ * b->ref) and fails on an error beyond a row's bound or a NaN. */
+static void check_all_rows(const char *kernel, run_buffers *b, const char *what)
+{
+    int rows = 0;
+    for (int r = 0; r < sc_batch_count; r++) {
+        const sc_batch_entry *e = &sc_batch_table[r];
+        if (strcmp(e->kernel, kernel) != 0 || !sc_isa_supported(e->isa))
+            continue;
+        rows++;
+        e->fn(&b->args);
+        sc_batch_error acc;
+        sc_batch_error_init(&acc);
+        for (size_t i = 0; i < b->args.n; i++) {
+            sc_batch_error_against(e, &b->args, i, b->ref + 4 * i, &acc);
+            for (int j = 0; j < e->n_out; j++)
+                if (isnan(b->out[j][i]))
+                    fail_msg("%s %s %s (%s): NaN at element %zu", kernel, e->tier,
+                             sc_isa_name(e->isa), what, i);
+        }
+        if (acc.max_ratio > 1.0) {
+            size_t w = acc.worst;
+            fail_msg("%s %s %s (%s): %.3g× the bound at in[0] = %a, out[0] = %a, ref %a", kernel,
+                     e->tier, sc_isa_name(e->isa), what, acc.max_ratio, (double)b->in[0][w],
+                     (double)b->out[0][w], b->ref[4 * w]);
+        }
+    }
+    assert_true(rows > 0);
+}
+
+static const sc_batch_entry *scalar_row(const char *kernel)
+{
+    for (int r = 0; r < sc_batch_count; r++)
+        if (strcmp(sc_batch_table[r].kernel, kernel) == 0 && sc_batch_table[r].isa == SC_ISA_SCALAR)
+            return &sc_batch_table[r];
+    fail_msg("no kernel %s", kernel);
+    return NULL;
+}
+
+static void fill_references(const sc_batch_entry *e, run_buffers *b)
+{
+    for (size_t i = 0; i < b->args.n; i++)
+        e->ref(&b->args, i, b->ref + 4 * i);
+}
+
+/* ---- BRDFs ---- */
+
+static sc_batch_brdf_params brdf_params(sc_brdf_kind model, int form, int cos_flag)
+{
+    sc_batch_brdf_params p = {.model = model, .form = form, .cos = cos_flag,
+                              .D = SC_D_GGX, .G = SC_G_SMITH_CORRELATED, .F = SC_F_SCHLICK,
+                              .diff = {0.8f, 0.5f, 0.2f}, .spec = {0.2f, 0.3f, 0.4f},
+                              .f0 = {0.04f, 0.5f, 0.9f}, .m = 32.0f, .alpha = 0.3f,
+                              .sigma = 0.5f, .ior = 1.5f};
+    return p;
+}
+
+static void check_brdf(const sc_batch_brdf_params *p, const char *what)
+{
+    const sc_batch_entry *e = scalar_row("brdf");
+    run_buffers b;
+    buffers_alloc(&b, e, N_BRDF, p);
+    for (size_t i = 0; i < N_BRDF; i++) {
+        float v[9];
+        sc_batch_sample(e, &rng, v);
+        for (int j = 0; j < 9; j++)
+            b.in[j][i] = v[j];
+    }
+    fill_references(e, &b);
+    check_all_rows("brdf", &b, what);
+    buffers_release(&b);
+}
+
+static void every_brdf_form_within_bounds(void **state)
+{
+    (void)state;
+    static const int forms[] = {1, 3, 2, 3, 2, 2}; /* by sc_brdf_kind */
+    for (int cos_flag = 0; cos_flag < 2; cos_flag++)
+        for (int model = SC_BRDF_LAMBERT; model < SC_BRDF_COOK_TORRANCE; model++)
+            for (int form = 0; form < forms[model]; form++) {
+                sc_batch_brdf_params p = brdf_params((sc_brdf_kind)model, form, cos_flag);
+                check_brdf(&p, sc_brdf_form_name((sc_brdf_kind)model, form));
+            }
+}
+
+/* D × G × F × form, at two roughnesses, with and without the cosine */
+static void every_cook_torrance_within_bounds(void **state)
+{
+    (void)state;
+    static const float alphas[] = {0.2f, 0.6f};
+    for (int D = 0; D < 2; D++)
+        for (int G = 0; G < 3; G++)
+            for (int F = 0; F < 3; F++)
+                for (int k = 0; k < 2; k++) {
+                    sc_batch_brdf_params p =
+                        brdf_params(SC_BRDF_COOK_TORRANCE, k & 1 ? SC_CT_1982 : SC_CT_WALTER, k);
+                    p.D = D;
+                    p.G = G;
+                    p.F = F;
+                    p.alpha = alphas[(D + G + F + k) & 1];
+                    char what[64];
+                    snprintf(what, sizeof what, "D %d G %d F %d alpha %g", D, G, F, (double)p.alpha);
+                    check_brdf(&p, what);
+                }
+}
+
+/* Other exponents, σ, η, and m = 0 (pow(0, 0) = 1). */
+static void brdf_parameter_extremes_within_bounds(void **state)
+{
+    (void)state;
+    sc_batch_brdf_params p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, 0);
+    p.m = 0.0f;
+    check_brdf(&p, "blinn m 0");
+    p.m = 200.0f;
+    check_brdf(&p, "blinn m 200");
+    p = brdf_params(SC_BRDF_PHONG, SC_PHONG_MODIFIED, 1);
+    p.m = 1.0f;
+    check_brdf(&p, "phong m 1");
+    p = brdf_params(SC_BRDF_OREN_NAYAR, SC_OREN_FULL, 0);
+    p.sigma = 1.2f;
+    check_brdf(&p, "oren-nayar sigma 1.2");
+    p.sigma = 0.0f;
+    check_brdf(&p, "oren-nayar sigma 0");
+    p = brdf_params(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER, 0);
+    p.F = SC_F_EXACT;
+    p.ior = 2.4f;
+    check_brdf(&p, "exact fresnel eta 2.4");
+    p = brdf_params(SC_BRDF_WARD, SC_WARD_GMD, 0);
+    p.alpha = 0.2f;
+    check_brdf(&p, "ward gmd alpha 0.2");
+}
+
+/* Worked example: l = v = n (normal incidence), Lambert and Blinn-Phong by hand. */
+static void brdf_normal_incidence_by_hand(void **state)
+{
+    (void)state;
+    float one[1] = {1.0f}, zero[1] = {0.0f}, r[1], g[1], bl[1];
+    sc_batch_brdf_params p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_NORMALIZED, 1);
+    sc_batch_args a = {{zero, zero, one, zero, zero, one, zero, zero, one}, {r, g, bl}, 1, NULL, &p};
+    assert_int_equal(sc_batch_run("brdf", "bits16", &a), 0);
+    /* c_diff/π + c_spec (m+8)/(8π), cos θ_i = 1 */
+    double want = 0.8 / pi + 0.2 * 40.0 / (8.0 * pi);
+    assert_true(fabs(r[0] - want) <= 1e-6 * want);
+    p.model = SC_BRDF_LAMBERT;
+    assert_int_equal(sc_batch_run("brdf", "bits12", &a), 0);
+    assert_true(fabs(bl[0] - 0.2 / pi) <= 1e-6);
+    p.model = 99; /* out of range: lambert */
+    assert_int_equal(sc_batch_run("brdf", "bits8", &a), 0);
+    assert_true(fabs(g[0] - 0.5 / pi) <= 1e-6);
+}
+
+/* ---- attenuation and spot ---- */
+
+/* Random r in [0, hi] plus the given points; every row of kernel. */
+static void check_function(const char *kernel, const void *params, double hi, const float *points,
+                           int n_points, const char *what)
+{
+    const sc_batch_entry *e = scalar_row(kernel);
+    run_buffers b;
+    buffers_alloc(&b, e, N_FUNC, params);
+    for (size_t i = 0; i < N_FUNC; i++)
+        b.in[0][i] = (size_t)n_points > i ? points[i]
+                                          : (float)(hi * (double)(rng = rng * 6364136223846793005ULL +
+                                                                      1442695040888963407ULL) /
+                                                    0x1p64);
+    fill_references(e, &b);
+    check_all_rows(kernel, &b, what);
+    buffers_release(&b);
+}
+
+static void attenuation_edges(void **state)
+{
+    (void)state;
+    const float points[] = {0.0f, 0x1p-149f, 1e-3f, 5.0f, 0x1.3ffffep+2f, 0x1.400002p+2f, 10.0f};
+    sc_batch_atten_params p = {.sc = 0.0f, .sl = 0.0f, .sq = 1.0f, .r_start = 5.0f, .r_end = 5.0f,
+                               .f_max = 3.0f, .f_c = 3.0f, .r_c = 5.0f, .s_e = 1.5f, .r_max = 5.0f};
+    int n = (int)(sizeof points / sizeof points[0]);
+    check_function("atten_invsq", &p, 20.0, points, n, "r = 0");
+    check_function("atten_clq", &p, 20.0, points, n, "pure quadratic, r = 0");
+    check_function("atten_window", &p, 20.0, points, n, "r_start = r_end: a step");
+    check_function("atten_pixar", &p, 20.0, points, n, "f_c = f_max: flat");
+    check_function("atten_windowed", &p, 20.0, points, n, "r = r_max");
+    check_function("atten_none", &p, 20.0, points, n, "none");
+    p.f_c = 0.25f;
+    p.s_e = 0.5f;
+    check_function("atten_pixar", &p, 20.0, points, n, "f_c < f_max");
+}
+
+/* By hand: the step, the flat pixar, r = 0 finite. */
+static void attenuation_by_hand(void **state)
+{
+    (void)state;
+    sc_batch_atten_params p = {.sc = 0.0f, .sl = 0.0f, .sq = 1.0f, .r_start = 5.0f, .r_end = 5.0f,
+                               .f_max = 3.0f, .f_c = 3.0f, .r_c = 5.0f, .s_e = 1.5f, .r_max = 5.0f};
+    float r[4] = {0.0f, 5.0f, 0x1.400002p+2f, 20.0f}, out[4];
+    sc_batch_args a = {{r}, {out}, 4, NULL, &p};
+    assert_int_equal(sc_batch_run("atten_window", "u2", &a), 0);
+    assert_true(out[0] == 1.0f && out[1] == 1.0f && out[2] == 0.0f && out[3] == 0.0f);
+    assert_int_equal(sc_batch_run("atten_invsq", "u2", &a), 0);
+    assert_true(out[0] == 1e4f && out[3] == 1.0f / 400.0f);
+    assert_int_equal(sc_batch_run("atten_pixar", "u4", &a), 0);
+    assert_true(out[0] == 3.0f && out[1] == 3.0f);
+    assert_true(fabs(out[3] - 3.0 * pow(0.25, 1.5)) <= 1e-6);
+}
+
+static void spot_edges(void **state)
+{
+    (void)state;
+    /* cos 30° and its float neighbours: the hard edge of inner = outer decides as in double */
+    float c30 = (float)cos(30.0 * pi / 180.0);
+    const float points[] = {-1.0f, 0.0f, 1.0f, c30, nextafterf(c30, 0.0f), nextafterf(c30, 2.0f)};
+    int n = (int)(sizeof points / sizeof points[0]);
+    sc_batch_spot_params p = {.exponent = 0.0f, .cutoff = 180.0f, .inner = 30.0f, .outer = 30.0f};
+    check_function("spot_opengl", &p, 1.0, points, n, "cutoff 180");
+    check_function("spot_directx", &p, 1.0, points, n, "inner = outer");
+    check_function("spot_smoothstep", &p, 1.0, points, n, "inner = outer");
+    p.cutoff = 30.0f;
+    check_function("spot_opengl", &p, 1.0, points, n, "exponent 0");
+    p.cutoff = 90.0f;
+    p.exponent = 3.0f;
+    p.inner = 0.0f;
+    p.outer = 90.0f;
+    check_function("spot_opengl", &p, 1.0, points, n, "cutoff 90");
+    check_function("spot_directx", &p, 1.0, points, n, "0..90");
+    check_function("spot_smoothstep", &p, 1.0, points, n, "0..90");
+}
+
+static void spot_by_hand(void **state)
+{
+    (void)state;
+    float c30 = (float)cos(30.0 * pi / 180.0);
+    float c[4] = {-1.0f, c30, nextafterf(c30, 0.0f), 1.0f}, out[4];
+    sc_batch_spot_params p = {.exponent = 2.0f, .cutoff = 180.0f, .inner = 30.0f, .outer = 30.0f};
+    sc_batch_args a = {{c}, {out}, 4, NULL, &p};
+    assert_int_equal(sc_batch_run("spot_opengl", "u1", &a), 0);
+    assert_true(out[0] == 1.0f && out[3] == 1.0f);
+    for (int t = 0; t < 2; t++) {
+        assert_int_equal(sc_batch_run(t ? "spot_smoothstep" : "spot_directx", t ? "u4" : "u16", &a), 0);
+        /* cos 30° rounded to float is below or above the double cosine: 1 exactly when above */
+        float at_edge = (double)c30 >= cos(30.0 * pi / 180.0) ? 1.0f : 0.0f;
+        assert_true(out[0] == 0.0f && out[1] == at_edge && out[2] == 0.0f && out[3] == 1.0f);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(brdf_normal_incidence_by_hand),
+        cmocka_unit_test(every_brdf_form_within_bounds),
+        cmocka_unit_test(every_cook_torrance_within_bounds),
+        cmocka_unit_test(brdf_parameter_extremes_within_bounds),
+        cmocka_unit_test(attenuation_by_hand),
+        cmocka_unit_test(attenuation_edges),
+        cmocka_unit_test(spot_by_hand),
+        cmocka_unit_test(spot_edges),
+    };
+    return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);
+}
