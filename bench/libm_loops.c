@@ -141,6 +141,94 @@ static void loop_shade(const sc_batch_args *a)
     }
 }
 
+/* ---- attenuation, spot, and the BRDF of the table's row (cook-torrance GGX) ---- */
+
+#define ATTEN_LOOP(name, expr)                                                                    \
+    static void loop_##name(const sc_batch_args *a)                                               \
+    {                                                                                             \
+        const sc_batch_atten_params *p = a->params;                                               \
+        (void)p;                                                                                  \
+        for (size_t i = 0; i < a->n; i++) {                                                       \
+            float r = a->in[0][i];                                                                \
+            (void)r;                                                                              \
+            a->out[0][i] = (expr);                                                                \
+        }                                                                                         \
+    }
+ATTEN_LOOP(atten_none, 1.0f)
+ATTEN_LOOP(atten_invsq, 1.0f / fmaxf(r * r, 1e-4f))
+ATTEN_LOOP(atten_clq, 1.0f / fmaxf(p->sc + p->sl * r + p->sq * r * r, 1e-4f))
+ATTEN_LOOP(atten_window, r <= p->r_start ? 1.0f
+                         : r >= p->r_end ? 0.0f
+                                         : (p->r_end - r) / (p->r_end - p->r_start))
+ATTEN_LOOP(atten_windowed, powf(fminf(fmaxf(1.0f - powf(r / p->r_max, 4.0f), 0.0f), 1.0f), 2.0f) /
+                               fmaxf(r * r, 1e-4f))
+
+static void loop_atten_pixar(const sc_batch_args *a)
+{
+    const sc_batch_atten_params *p = a->params;
+    float k0 = logf(p->f_c / p->f_max), k1 = p->s_e / k0;
+    for (size_t i = 0; i < a->n; i++) {
+        float r = a->in[0][i];
+        a->out[0][i] = r > p->r_c           ? p->f_c * powf(p->r_c / r, p->s_e)
+                       : p->f_c == p->f_max ? p->f_max
+                                            : p->f_max * expf(k0 * powf(r / p->r_c, -k1));
+    }
+}
+
+static const float deg_f = SC_PI_F / 180.0f;
+
+static void loop_spot_opengl(const sc_batch_args *a)
+{
+    const sc_batch_spot_params *p = a->params;
+    float cu = cosf(p->cutoff * deg_f);
+    for (size_t i = 0; i < a->n; i++) {
+        float c = a->in[0][i];
+        a->out[0][i] = p->cutoff == 180.0f ? 1.0f : c >= cu ? powf(fmaxf(c, 0.0f), p->exponent) : 0.0f;
+    }
+}
+
+static void spot_loop(const sc_batch_args *a, int smooth)
+{
+    const sc_batch_spot_params *p = a->params;
+    float cp = cosf(p->inner * deg_f), cu = cosf(p->outer * deg_f);
+    for (size_t i = 0; i < a->n; i++) {
+        float c = a->in[0][i], t = (c - cu) / (cp - cu);
+        float f = smooth ? t * t * (3.0f - 2.0f * t) : powf(t, p->exponent);
+        a->out[0][i] = c >= cp ? 1.0f : c <= cu ? 0.0f : f;
+    }
+}
+static void loop_spot_directx(const sc_batch_args *a) { spot_loop(a, 0); }
+static void loop_spot_smoothstep(const sc_batch_args *a) { spot_loop(a, 1); }
+
+/* f (or f cos θ_i) of cook-torrance GGX, Smith height-correlated, Schlick per channel */
+static void loop_brdf(const sc_batch_args *a)
+{
+    const sc_batch_brdf_params *p = a->params;
+    float a2 = p->alpha * p->alpha;
+    for (size_t i = 0; i < a->n; i++) {
+        float l[3], v[3], n[3];
+        for (int c = 0; c < 3; c++) {
+            l[c] = a->in[c][i];
+            v[c] = a->in[3 + c][i];
+            n[c] = a->in[6 + c][i];
+        }
+        unit(l);
+        unit(v);
+        unit(n);
+        float nl = dot3(n, l), nv = dot3(n, v), h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
+        unit(h);
+        float nh = fmaxf(dot3(n, h), 0.0f), d = nh * nh * (a2 - 1.0f) + 1.0f;
+        float D = a2 / (SC_PI_F * d * d);
+        float V = 0.5f / (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
+        float m5 = powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f), w = p->cos ? nl : 1.0f;
+        for (int c = 0; c < 3; c++) {
+            float F = p->f0[c] + (1.0f - p->f0[c]) * m5;
+            float f = p->diff[c] / SC_PI_F + p->spec[c] * D * V * F;
+            a->out[c][i] = nl > 0.0f && nv > 0.0f ? f * w : 0.0f;
+        }
+    }
+}
+
 static const struct {
     const char *kernel;
     sc_batch_fn fn;
@@ -153,6 +241,11 @@ static const struct {
     {"length", loop_length},   {"shade", loop_shade},
     {"sin", loop_sin},         {"cos", loop_cos},
     {"acos", loop_acos},       {"atan2", loop_atan2},
+    {"atten_none", loop_atten_none}, {"atten_invsq", loop_atten_invsq},
+    {"atten_clq", loop_atten_clq}, {"atten_window", loop_atten_window},
+    {"atten_pixar", loop_atten_pixar}, {"atten_windowed", loop_atten_windowed},
+    {"spot_opengl", loop_spot_opengl}, {"spot_directx", loop_spot_directx},
+    {"spot_smoothstep", loop_spot_smoothstep}, {"brdf", loop_brdf},
 };
 
 sc_batch_fn bench_libm_loop(const char *kernel)

@@ -150,18 +150,19 @@ static SC_INLINE vf atten_window(int tier, vf r, const func_uniforms *u)
     return vf_select(vf_le(r, vf_set1(u->k[0])), vf_set1(1.0f), f);
 }
 
-/* Barzel 1997: f_c (r_c/r)^s_e beyond r_c; f_max exp(k0 (r/r_c)^(−k1)) inside (−k1 > 0, so
- * r = 0 gives f_max); f_c = f_max is the flat limit f_max. */
+/* Barzel 1997: f_c (r/r_c)^(−s_e) beyond r_c; f_max exp(k0 (r/r_c)^(−k1)) inside (−k1 > 0,
+ * so r = 0 gives f_max): one pow of r/r_c for both; f_c = f_max is the flat limit f_max. */
 static SC_INLINE vf atten_pixar(int tier, vf r, const func_uniforms *u)
 {
-    vf rc = vf_set1(u->k[1]);
-    vf outside = vf_mul(vf_set1(u->k[0]), light_pow(tier, vf_div(rc, r), vf_set1(u->k[2])));
+    vm outside = vf_lt(vf_set1(u->k[1]), r);
+    if (u->k[4] == 0.0f && !vm_any(outside))
+        return vf_set1(u->k[3]);
+    vf y = vf_select(outside, vf_set1(-u->k[2]), vf_set1(u->k[5]));
+    vf t = light_pow(tier, vf_max(vf_div(r, vf_set1(u->k[1])), vf_set1(0.0f)), y);
     vf inside = vf_set1(u->k[3]);
-    if (u->k[4] != 0.0f) {
-        vf t = light_pow(tier, vf_max(vf_div(r, rc), vf_set1(0.0f)), vf_set1(u->k[5]));
+    if (u->k[4] != 0.0f)
         inside = vf_mul(inside, light_exp(tier, vf_mul(vf_set1(u->k[4]), t)));
-    }
-    return vf_select(vf_lt(rc, r), outside, inside);
+    return vf_select(outside, vf_mul(vf_set1(u->k[0]), t), inside);
 }
 
 /* Karis 2013: saturate(1 − (r/r_max)^4)² / max(r², 1e-4), with 1 − (r/r_max)^4 as
@@ -220,13 +221,14 @@ static inline void spot_setup_penumbra(const void *params, func_uniforms *u)
                           cp > cu ? (float)(1.0 / (cp - cu)) : 0.0f, p->exponent}};
 }
 
-/* x^e with pow(0, 0) = 1 and 0 for x <= 0 (the cosine lobes, light.c lobe_pow) */
+/* x^e with pow(0, 0) = 1 and 0 for x <= 0 (the cosine lobes, light.c lobe_pow); those lanes
+ * take the base 1/2, not 0 or 1, which the u1 pow would hand to the scalar built-in. */
 static SC_INLINE vf lobe_pow(int tier, vf x, float e)
 {
     if (e == 0.0f)
         return vf_set1(1.0f);
     vf pos = vf_lt(vf_set1(0.0f), x);
-    return vf_select(pos, light_pow(tier, vf_select(pos, x, vf_set1(1.0f)), vf_set1(e)), vf_set1(0.0f));
+    return vf_select(pos, light_pow(tier, vf_select(pos, x, vf_set1(0.5f)), vf_set1(e)), vf_set1(0.0f));
 }
 
 static SC_INLINE vf spot_opengl(int tier, vf c, const func_uniforms *u)
