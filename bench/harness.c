@@ -16,24 +16,27 @@ enum { ACCURACY_SAMPLE = 1 << 16, MIN_SAMPLE_NS = 200000, MAX_ROWS = 4096 };
 typedef struct {
     const char *name;
     sc_batch_brdf brdf;
-    int n_dir, n_point;
+    int n_dir, n_point, n_spot;
 } bench_scene;
 static const bench_scene scenes[] = {
-    {"lambert 1d", SC_BATCH_LAMBERT, 1, 0},       {"blinn-phong 1d", SC_BATCH_BLINN_PHONG, 1, 0},
-    {"ggx 1d", SC_BATCH_GGX, 1, 0},               {"blinn-phong 1p", SC_BATCH_BLINN_PHONG, 0, 1},
-    {"blinn-phong 1d+3p", SC_BATCH_BLINN_PHONG, 1, 3},
+    {"lambert 1d", SC_BATCH_LAMBERT, 1, 0, 0},
+    {"blinn-phong 1d", SC_BATCH_BLINN_PHONG, 1, 0, 0},
+    {"ggx 1d", SC_BATCH_GGX, 1, 0, 0},
+    {"blinn-phong 1p", SC_BATCH_BLINN_PHONG, 0, 1, 0},
+    {"blinn-phong 1s", SC_BATCH_BLINN_PHONG, 0, 0, 1},
+    {"blinn-phong 1d+3p", SC_BATCH_BLINN_PHONG, 1, 3, 0},
 };
 enum { N_SCENES = (int)(sizeof scenes / sizeof scenes[0]) };
 
 /* Arithmetic operations per element of shade, counted from src/simd/shade_impl.h (an FMA, a
- * division or an estimate counts one): normalizing n and v and n·v; per light its direction
- * and falloff, the cosine and the colour sums; the lobe. */
+ * division or an estimate counts one): normalizing n and v and n·v; per light its direction,
+ * falloff and spot factor, the cosine and the colour sums; the lobe. */
 static double shade_ops(const sc_batch_scene *s)
 {
-    static const double lobe[] = {0, 46, 52};
+    static const double lobe[] = {0, 46, 52}, light[] = {0, 23, 23 + 30};
     double ops = 33;
     for (int k = 0; k < s->n_lights; k++)
-        ops += 19 + (s->lights[k].kind == SC_BATCH_POINT ? 23 : 0) + lobe[s->brdf];
+        ops += 19 + light[s->lights[k].kind] + lobe[s->brdf];
     return ops;
 }
 
@@ -43,7 +46,7 @@ static int inputs_read(const sc_batch_entry *e, const sc_batch_scene *s)
     if (!s)
         return e->n_in;
     for (int k = 0; k < s->n_lights; k++)
-        if (s->lights[k].kind == SC_BATCH_POINT)
+        if (s->lights[k].kind != SC_BATCH_DIRECTIONAL)
             return 9;
     return 6;
 }
@@ -86,7 +89,7 @@ static int data_make(bench_data *d, const sc_batch_entry *domain_of, size_t n, c
     d->checked = n < ACCURACY_SAMPLE ? n : ACCURACY_SAMPLE;
     d->params = domain_of->params;
     if (bs) {
-        sc_batch_scene_example(bs->brdf, bs->n_dir, bs->n_point, &d->scene);
+        sc_batch_scene_example(bs->brdf, bs->n_dir, bs->n_point, bs->n_spot, &d->scene);
         d->has_scene = 1;
     }
     for (int j = 0; j < domain_of->n_in; j++)

@@ -100,6 +100,19 @@ static float specular(const sc_batch_scene *s, const float *n, const float *v, c
     return D * V * F;
 }
 
+static float spot(const sc_batch_light *lt, const float *l)
+{
+    float cos_s = -dot3(l, lt->dir);
+    if (lt->spot == SC_BATCH_SPOT_OPENGL)
+        return lt->cos_outer <= -1.0f ? 1.0f : cos_s >= lt->cos_outer ? powf(cos_s, lt->exponent) : 0.0f;
+    if (cos_s >= lt->cos_inner)
+        return 1.0f;
+    if (cos_s <= lt->cos_outer)
+        return 0.0f;
+    float t = (cos_s - lt->cos_outer) / (lt->cos_inner - lt->cos_outer);
+    return lt->spot == SC_BATCH_SPOT_SMOOTHSTEP ? t * t * (3.0f - 2.0f * t) : powf(t, lt->exponent);
+}
+
 static void shade_one(const sc_batch_scene *s, float n[3], float v[3], const float p[3], float *rgb)
 {
     unit(n);
@@ -111,11 +124,13 @@ static void shade_one(const sc_batch_scene *s, float n[3], float v[3], const flo
         const sc_batch_light *lt = &s->lights[k];
         float l[3], e = 1.0f;
         memcpy(l, lt->dir, sizeof l);
-        if (lt->kind == SC_BATCH_POINT) {
+        if (lt->kind != SC_BATCH_DIRECTIONAL) {
             for (int c = 0; c < 3; c++)
                 l[c] = lt->pos[c] - p[c];
             e = 1.0f / fmaxf(dot3(l, l), 1e-4f);
             unit(l);
+            if (lt->kind == SC_BATCH_SPOT)
+                e *= spot(lt, l);
         }
         float nl = dot3(n, l);
         if (nl <= 0.0f || nv <= 0.0f)

@@ -40,15 +40,23 @@ int sc_isa_set(sc_isa isa);
 
 /* ---- shading uniforms ---- */
 
-enum { SC_BATCH_MAX_LIGHTS = 8 };
+enum { SC_BATCH_MAX_LIGHTS = 64 }; /* more: split the set, amb_term 0 in all parts but one */
 
-typedef enum { SC_BATCH_DIRECTIONAL, SC_BATCH_POINT } sc_batch_light_kind;
+typedef enum { SC_BATCH_DIRECTIONAL, SC_BATCH_POINT, SC_BATCH_SPOT } sc_batch_light_kind;
+typedef enum { SC_BATCH_SPOT_OPENGL, SC_BATCH_SPOT_DIRECTX, SC_BATCH_SPOT_SMOOTHSTEP } sc_batch_spot;
 
+/* A light as light.h computes it: directional (E_L), point and spot (I_L with inverse-square
+ * falloff 1/max(r², 10^-4); at r = 0, l = n). Spot factor of cos θ_s = −l·dir (SPEC §4):
+ * opengl cos_s^exponent where cos θ_s >= cos_outer (cos_outer <= −1: a cutoff of 180°, factor
+ * 1); directx and smoothstep 1 inside cos_inner, 0 outside cos_outer, between them the ramp
+ * t = (cos θ_s − cos_outer)/(cos_inner − cos_outer) to the exponent, or t²(3 − 2t). */
 typedef struct {
     sc_batch_light_kind kind;
-    float dir[3];   /* directional: unit vector toward the light */
-    float pos[3];   /* point */
-    float color[3]; /* E_L (directional) or I_L (point: E_L = I_L / max(r², 10^-4)) */
+    float dir[3];   /* directional: unit vector toward the light; spot: unit axis it points along */
+    float pos[3];   /* point, spot */
+    float color[3]; /* E_L (directional) or I_L (point, spot) */
+    sc_batch_spot spot;
+    float cos_outer, cos_inner, exponent; /* spot: cosines of the half-angles */
 } sc_batch_light;
 
 typedef enum { SC_BATCH_LAMBERT, SC_BATCH_BLINN_PHONG, SC_BATCH_GGX } sc_batch_brdf;
@@ -58,7 +66,8 @@ typedef enum { SC_BATCH_LAMBERT, SC_BATCH_BLINN_PHONG, SC_BATCH_GGX } sc_batch_b
  * ggx c_diff/π + c_spec D_GGX V_Smith-correlated F_Schlick(f0) (the cook-torrance model of
  * brdf.h with D=ggx G=smith-correlated F=schlick). f = 0 where n·l <= 0 or n·v <= 0; a point
  * light at the shading point lights nothing. The kernel computes only what the scene names: a
- * directional light costs no distance or falloff, a lambert scene no specular lobe. */
+ * directional light costs no distance, falloff or spot factor, a point light no spot factor, a
+ * lambert scene no specular lobe. */
 typedef struct {
     sc_batch_light lights[SC_BATCH_MAX_LIGHTS];
     int n_lights;
@@ -67,9 +76,11 @@ typedef struct {
     float m, alpha, f0;
 } sc_batch_scene;
 
-/* The scenes of the tests and of `shadecalc bench`: n_dir directional and n_point point lights
- * around +y, diff 0.8/0.5/0.2, spec 0.2 (ggx: 1), m 32, α 0.3, f0 0.04, ambient 0.02. */
-void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, sc_batch_scene *out);
+/* The scenes of the tests and of `shadecalc bench`: n_dir directional, n_point point and n_spot
+ * spot lights (the three spot kinds in turn) around +y, diff 0.8/0.5/0.2, spec 0.2 (ggx: 1),
+ * m 32, α 0.3, f0 0.04, ambient 0.02. */
+void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, int n_spot,
+                            sc_batch_scene *out);
 const char *sc_batch_brdf_name(sc_batch_brdf brdf);
 
 /* ---- light function and BRDF parameters ---- */

@@ -8,6 +8,7 @@
 #include "batch/reference.h"
 #include "shadecalc/accuracy.h"
 #include "shadecalc/brdf.h"
+#include "shadecalc/light.h"
 
 #define REF1(name, expr)                                                                          \
     void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out)                       \
@@ -100,22 +101,24 @@ static void scene_brdf(const sc_batch_scene *s, sc_brdf *b)
     b->F = SC_F_SCHLICK;
 }
 
-/* Direction and irradiance factor of light k at p (batch.h); 0 if the light is at p. */
-static double light_at(const sc_batch_light *lt, const double p[3], double l[3])
+static double degrees_of(double cosine) { return acos(fmax(-1.0, fmin(1.0, cosine))) * 57.29577951308232; }
+
+/* The batch light as light.h's light: the reference evaluates it with sc_light_eval. */
+static void light_of(const sc_batch_light *b, sc_light *out)
 {
-    if (lt->kind == SC_BATCH_DIRECTIONAL) {
-        for (int c = 0; c < 3; c++)
-            l[c] = lt->dir[c];
-        return 1.0;
+    static const sc_light_kind kinds[] = {SC_LIGHT_DIRECTIONAL, SC_LIGHT_POINT, SC_LIGHT_SPOT};
+    static const sc_spot_kind spots[] = {SC_SPOT_OPENGL, SC_SPOT_DIRECTX, SC_SPOT_SMOOTHSTEP};
+    sc_light_init(out, kinds[b->kind]);
+    for (int c = 0; c < 3; c++) {
+        out->dir[c] = b->dir[c];
+        out->pos[c] = b->pos[c];
+        out->intensity[c] = b->color[c];
     }
-    for (int c = 0; c < 3; c++)
-        l[c] = (double)lt->pos[c] - p[c];
-    double r2 = dot3(l, l);
-    if (r2 == 0.0)
-        return 0.0;
-    for (int c = 0; c < 3; c++)
-        l[c] /= sqrt(r2);
-    return 1.0 / fmax(r2, 1e-4);
+    out->spot.kind = spots[b->spot];
+    out->spot.exponent = b->exponent;
+    out->spot.cutoff = b->cos_outer <= -1.0f ? 180.0 : degrees_of(b->cos_outer);
+    out->spot.outer = degrees_of(b->cos_outer);
+    out->spot.inner = degrees_of(b->cos_inner);
 }
 
 /* out[0..2] the radiance; out[3] the scale of the allowance: ambient plus Σ E f without the
@@ -142,14 +145,16 @@ void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
         v[c] /= vlen;
     double scale = 0.0;
     for (int k = 0; k < s->n_lights; k++) {
-        double l[3], falloff = light_at(&s->lights[k], p, l);
+        sc_light light;
+        sc_light_sample ls;
+        light_of(&s->lights[k], &light);
+        sc_light_eval(SC_DOUBLE, &light, p, frame.n, &ls);
         sc_brdf_terms t;
-        sc_brdf_eval(SC_DOUBLE, &b, &frame, l, v, &t);
-        double cos_i = dot3(frame.n, l);
+        sc_brdf_eval(SC_DOUBLE, &b, &frame, ls.l, v, &t);
+        double cos_i = dot3(frame.n, ls.l);
         for (int c = 0; c < 3; c++) {
-            double e = s->lights[k].color[c] * falloff;
-            out[c] += cos_i > 0.0 ? t.f[c] * e * cos_i : 0.0;
-            scale = fmax(scale, e * (b.diff[c] / 3.141592653589793 + t.specular[c]));
+            out[c] += cos_i > 0.0 ? t.f[c] * ls.E[c] * cos_i : 0.0;
+            scale = fmax(scale, ls.E[c] * (b.diff[c] / 3.141592653589793 + t.specular[c]));
         }
     }
     out[3] += scale;
@@ -219,20 +224,26 @@ void sc_batch_sample(const sc_batch_entry *e, uint64_t *rng, float *in)
 static const char *const brdf_names[] = {"lambert", "blinn-phong", "ggx"};
 const char *sc_batch_brdf_name(sc_batch_brdf brdf) { return brdf_names[brdf]; }
 
-void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, sc_batch_scene *out)
+void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, int n_spot,
+                            sc_batch_scene *out)
 {
     memset(out, 0, sizeof *out);
     out->brdf = brdf;
-    for (int k = 0; k < n_dir + n_point && k < SC_BATCH_MAX_LIGHTS; k++) {
+    for (int k = 0; k < n_dir + n_point + n_spot && k < SC_BATCH_MAX_LIGHTS; k++) {
         sc_batch_light *lt = &out->lights[out->n_lights++];
         double a = 2.399963 * k; /* golden-angle spread around +y */
         double d[3] = {0.6 * cos(a), 0.8, 0.6 * sin(a)};
-        lt->kind = k < n_dir ? SC_BATCH_DIRECTIONAL : SC_BATCH_POINT;
+        lt->kind = k < n_dir ? SC_BATCH_DIRECTIONAL : k < n_dir + n_point ? SC_BATCH_POINT
+                                                                         : SC_BATCH_SPOT;
         for (int c = 0; c < 3; c++) {
-            lt->dir[c] = (float)d[c];
             lt->pos[c] = (float)(4.0 * d[c]);
+            lt->dir[c] = (float)(lt->kind == SC_BATCH_SPOT ? -d[c] : d[c]); /* spots aim back */
             lt->color[c] = lt->kind == SC_BATCH_DIRECTIONAL ? 1.0f : 16.0f;
         }
+        lt->spot = (sc_batch_spot)(k % 3); /* the three kinds in turn; cones of 25° to 40° */
+        lt->cos_inner = 0.906307787f;
+        lt->cos_outer = 0.766044443f;
+        lt->exponent = 2.0f;
     }
     const float diff[3] = {0.8f, 0.5f, 0.2f};
     for (int c = 0; c < 3; c++) {

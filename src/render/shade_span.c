@@ -1,6 +1,6 @@
 /* Shading a span of pixels (render/shade_span.h): through the SIMD batch shading kernel
  * (shadecalc/batch.h, tier "accurate") in highp when the scene is one it computes, through
- * sc_shade per point otherwise (other precisions, models, lights). */
+ * sc_shade per point otherwise (other precisions, models, falloffs). */
 #include "render/shade_span.h"
 
 #include <math.h>
@@ -28,24 +28,47 @@ static int batch_brdf_of(const sc_brdf *b, sc_batch_scene *out)
     }
 }
 
-/* Directional lights, and point lights with inverse-square falloff (the kernel's 1/max(r²,
- * 10^-4) is light.h's), without a range. */
+/* The spot of a light as the kernel's uniforms: cosines of the half-angles. */
+static void batch_spot_of(const sc_spot *spot, sc_batch_light *out)
+{
+    static const sc_batch_spot kinds[] = {SC_BATCH_SPOT_OPENGL, SC_BATCH_SPOT_DIRECTX,
+                                          SC_BATCH_SPOT_SMOOTHSTEP};
+    const double radians = 0.017453292519943295;
+    out->spot = kinds[spot->kind];
+    out->exponent = (float)spot->exponent;
+    if (spot->kind == SC_SPOT_OPENGL) {
+        out->cos_outer = spot->cutoff == 180.0 ? -2.0f : (float)cos(spot->cutoff * radians);
+        return;
+    }
+    out->cos_outer = (float)cos(spot->outer * radians);
+    out->cos_inner = (float)cos(spot->inner * radians);
+}
+
+static void unit_float(const double v[3], float out[3])
+{
+    double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int c = 0; c < 3; c++)
+        out[c] = (float)(len > 0.0 ? v[c] / len : 0.0);
+}
+
+/* Directional lights, and point and spot lights with inverse-square falloff (the kernel's
+ * 1/max(r², 10^-4) is light.h's), without a range. */
 static int batch_light_of(const sc_light *l, sc_batch_light *out)
 {
-    if (isfinite(l->range))
+    static const sc_batch_light_kind kinds[] = {SC_BATCH_DIRECTIONAL, SC_BATCH_POINT,
+                                                SC_BATCH_SPOT};
+    int directional = l->kind == SC_LIGHT_DIRECTIONAL;
+    if (isfinite(l->range) ||
+        l->atten.kind != (directional ? SC_ATTEN_NONE : SC_ATTEN_INVERSE_SQUARE))
         return 0;
-    if (l->kind == SC_LIGHT_DIRECTIONAL && l->atten.kind == SC_ATTEN_NONE)
-        out->kind = SC_BATCH_DIRECTIONAL;
-    else if (l->kind == SC_LIGHT_POINT && l->atten.kind == SC_ATTEN_INVERSE_SQUARE)
-        out->kind = SC_BATCH_POINT;
-    else
-        return 0;
-    double len = sqrt(l->dir[0] * l->dir[0] + l->dir[1] * l->dir[1] + l->dir[2] * l->dir[2]);
+    out->kind = kinds[l->kind];
+    unit_float(l->dir, out->dir);
     for (int c = 0; c < 3; c++) {
-        out->dir[c] = (float)(len > 0.0 ? l->dir[c] / len : 0.0);
         out->pos[c] = (float)l->pos[c];
         out->color[c] = (float)l->intensity[c];
     }
+    if (l->kind == SC_LIGHT_SPOT)
+        batch_spot_of(&l->spot, out);
     return 1;
 }
 

@@ -3,7 +3,7 @@
  * The seam for the SIMD batch shading kernels: the rasterizer gathers the points of one span
  * (a row of a tile, or a block of vertices for Gouraud), this function turns them into colours.
  * In highp, scenes the batch shading kernel computes (lambert, normalized blinn-phong, GGX
- * cook-torrance; directional and inverse-square point lights) go through it, on the instruction
+ * cook-torrance; directional lights, inverse-square point and spot lights) go through it, on the instruction
  * set SHADECALC_ISA or CPUID chose; everything else through sc_shade per point. */
 #ifndef SHADECALC_RENDER_SHADE_SPAN_H
 #define SHADECALC_RENDER_SHADE_SPAN_H

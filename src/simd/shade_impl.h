@@ -232,9 +232,29 @@ static SC_INLINE vf specular(int tier, int nt, sc_batch_brdf brdf, const sc_batc
     return vf_mul(vf_mul(D, V), F);
 }
 
-/* Direction to light k and its irradiance factor (E_L, or I_L / max(r², 10^-4) for a point
- * light; a light at the shading point lights nothing: l = 0). */
-static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt,
+/* The spot factor of cos θ_s (shadecalc/batch.h, SPEC §4); the light's kind is uniform. */
+static SC_INLINE vf spot_factor(int tier, const sc_batch_light *lt, vf cos_s)
+{
+    vf one = vf_set1(1.0f), zero = vf_set1(0.0f);
+    if (lt->spot == SC_BATCH_SPOT_OPENGL) {
+        if (lt->cos_outer <= -1.0f)
+            return one; /* a cutoff of 180°: no cone */
+        vf p = tier_pow(tier, vf_max(cos_s, vf_set1(FLT_MIN)), vf_set1(lt->exponent));
+        return vf_select(vf_lt(cos_s, vf_set1(lt->cos_outer)), zero, p);
+    }
+    if (!(lt->cos_inner > lt->cos_outer)) /* inner = outer: a hard edge */
+        return vf_select(vf_lt(cos_s, vf_set1(lt->cos_inner)), zero, one);
+    vf ramp = vf_mul(vf_sub(cos_s, vf_set1(lt->cos_outer)), vf_set1(1.0f / (lt->cos_inner - lt->cos_outer)));
+    vf t = vf_min(vf_max(ramp, zero), one);
+    vf f = lt->spot == SC_BATCH_SPOT_SMOOTHSTEP
+               ? vf_mul(vf_mul(t, t), vf_fma(vf_set1(-2.0f), t, vf_set1(3.0f)))
+               : tier_pow(tier, vf_max(t, vf_set1(FLT_MIN)), vf_set1(lt->exponent));
+    return vf_select(vf_le(ramp, zero), zero, vf_select(vf_le(one, ramp), one, f));
+}
+
+/* Direction to light k and its irradiance factor: 1 (directional), or I_L / max(r², 10^-4)
+ * times the spot factor; at the light itself (r = 0) l = n, as light.h has it. */
+static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt, v3 n,
                               const float *const *in, size_t i, vf *falloff)
 {
     if (lt->kind == SC_BATCH_DIRECTIONAL) {
@@ -244,7 +264,15 @@ static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt,
     v3 d = v3_sub(v3_set1(lt->pos), v3_load(in, 6, i));
     vf r2 = v3_dot(d, d);
     *falloff = tier_rcp(tier, vf_min(vf_max(r2, vf_set1(1e-4f)), vf_set1(FLT_MAX)));
-    return v3_normalize_dd(nt, d, r2);
+    v3 l = v3_normalize_dd(nt, d, r2);
+    vm at_light = vf_eq(r2, vf_set1(0.0f));
+    l = (v3){vf_select(at_light, n.x, l.x), vf_select(at_light, n.y, l.y),
+             vf_select(at_light, n.z, l.z)};
+    if (lt->kind == SC_BATCH_SPOT) {
+        vf cos_s = vf_sub(vf_set1(0.0f), v3_dot(l, v3_set1(lt->dir)));
+        *falloff = vf_mul(*falloff, spot_factor(tier, lt, cos_s));
+    }
+    return l;
 }
 
 /* The shading equation for one vector of elements; brdf is a constant at each call (one loop
@@ -261,7 +289,7 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
     for (int k = 0; k < s->n_lights; k++) {
         const sc_batch_light *lt = &s->lights[k];
         vf falloff;
-        v3 l = light_dir(tier, nt, lt, in, i, &falloff);
+        v3 l = light_dir(tier, nt, lt, n, in, i, &falloff);
         vf nl = v3_dot(n, l);
         vm lit = vm_and(vf_lt(vf_set1(0.0f), nl), vf_lt(vf_set1(0.0f), nv));
         vf w = vf_select(lit, vf_mul(nl, falloff), vf_set1(0.0f)); /* cos θ_i · falloff */

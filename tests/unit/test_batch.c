@@ -48,14 +48,14 @@ static uint64_t next(void)
 }
 
 /* The scene every shading entry is tested with: all three BRDFs in turn would triple the time,
- * so the lobe with the most terms (ggx), one directional and one point light; blinn-phong and
- * lambert get the compare-with-scalar test below. */
+ * so the lobe with the most terms (ggx), one directional, one point and three spot lights (of
+ * the three kinds); blinn-phong and lambert get the compare-with-scalar test below. */
 static sc_batch_scene scenes[3];
 
 static void make_scenes(void)
 {
     for (int b = 0; b < 3; b++)
-        sc_batch_scene_example((sc_batch_brdf)b, 1, 1, &scenes[b]);
+        sc_batch_scene_example((sc_batch_brdf)b, 1, 1, 3, &scenes[b]);
 }
 
 /* n elements of e's inputs, and output arrays, as sc_batch_args. */

@@ -234,8 +234,8 @@ static void threads_give_the_same_image(void **state)
 
 /* highp shading of scenes the batch kernel computes goes through it (render/shade_span.c):
  * the image matches the double sc_shade image within the kernel's accurate-tier bound
- * (relative 2^-16 plus the float rounding of the inputs), for each of its BRDFs and with a
- * directional and a point light. */
+ * (relative 2^-16 plus the float rounding of the inputs), for each of its BRDFs, with a
+ * directional, a point and a spot light. */
 static void batch_kernel_matches_sc_shade(void **state)
 {
     (void)state;
@@ -246,11 +246,13 @@ static void batch_kernel_matches_sc_shade(void **state)
     sc_mesh m;
     tessellate(s, 1500, &m);
     char err[256];
-    sc_light lights[2];
+    sc_light lights[3];
     assert_int_equal(sc_light_parse("point pos=2,-3,3 I=20", &lights[0], err, sizeof err), 0);
     assert_int_equal(sc_light_parse("directional dir=-1,-1,1 E=0.5", &lights[1], err, sizeof err), 0);
+    assert_int_equal(sc_light_parse("spot pos=0,-4,0 dir=0,1,0 I=30 spot=directx inner=10 outer=20 exp=2",
+                                    &lights[2], err, sizeof err), 0);
     for (size_t k = 0; k < sizeof models / sizeof models[0]; k++) {
-        sc_scene scene = {lights, 2, {0}, {0.1, 0.1, 0.1}};
+        sc_scene scene = {lights, 3, {0}, {0.1, 0.1, 0.1}};
         assert_int_equal(sc_model_parse(models[k], &scene.model, err, sizeof err), 0);
         sc_batch_scene bs;
         assert_int_equal(render_batch_scene(&scene, &bs), 1); /* the kernel's path is taken */
@@ -278,12 +280,12 @@ static void batch_kernel_matches_sc_shade(void **state)
     sc_surface_free(s);
 }
 
-/* What the kernel does not compute stays with sc_shade: other BRDFs, spot lights, other
- * falloffs, legacy models. */
+/* What the kernel does not compute stays with sc_shade: other BRDFs, other falloffs, legacy
+ * models. */
 static void other_scenes_keep_sc_shade(void **state)
 {
     (void)state;
-    static const char *const lights[] = {"spot pos=0,0,3 dir=0,0,-1 I=5 cutoff=30",
+    static const char *const lights[] = {"spot pos=0,0,3 dir=0,0,-1 I=5 atten=window rstart=1 rend=9",
                                          "point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01",
                                          "point pos=0,0,3 I=5"};
     static const char *const models[] = {"lambert", "lambert", "phong m=20"};
