@@ -9,6 +9,7 @@
 #include "cli/cli.h"
 #include "cli/progress.h"
 #include "cli/setup.h"
+#include "shadecalc/batch.h"
 #include "shadecalc/render.h"
 
 /* The default picture: a z-up world (the built-in surfaces' axes are z) seen from the front
@@ -64,6 +65,8 @@ static void usage(FILE *out)
             "      --normals        add N.X N.Y N.Z (the shading normal)\n"
             "  -j, --threads N      threads (default: one per online core)\n"
             "  -p, --precision P    double|highp|mediump|lowp (default highp)\n"
+            "      --isa I          scalar|sse4.1|avx2: the shading kernel's instruction set\n"
+            "                       (default: SHADECALC_ISA, else the best this CPU has)\n"
             "      --compare        the Gouraud/Phong comparison (writes into --output-dir)\n"
             "      --output-dir DIR where --compare writes its images (default .)\n"
             "  -f, --format F       table|csv for --compare (default table)\n"
@@ -160,9 +163,24 @@ static char *join_command(int argc, char **argv)
 
 /* ---- options ---- */
 
+/* --isa: the instruction set of the batch shading kernel highp pixels go through */
+static int parse_isa(const char *arg)
+{
+    sc_isa isa;
+    if (sc_isa_parse(arg, &isa) != 0) {
+        sc_error("render: --isa %s: expected scalar, sse4.1 or avx2", arg);
+        return SC_EXIT_USAGE;
+    }
+    if (sc_isa_set(isa) != 0) {
+        sc_error("render: --isa %s: not supported by this CPU or build", arg);
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}
+
 enum {
     OPT_SURFACE = 256, OPT_MESH, OPT_SHADING, OPT_EYE, OPT_AT, OPT_UP, OPT_FOV, OPT_SIZE,
-    OPT_EXR_TYPE, OPT_DEPTH, OPT_NORMALS, OPT_COMPARE, OPT_OUTPUT_DIR
+    OPT_EXR_TYPE, OPT_DEPTH, OPT_NORMALS, OPT_COMPARE, OPT_OUTPUT_DIR, OPT_ISA
 };
 
 typedef struct {
@@ -181,6 +199,7 @@ static int apply_value(render_options *o, int c, const char *arg)
         o->plan_option = "--triangles";
         return parse_count("--triangles", arg, 2, 1L << 26, &o->triangles);
     case 'j': return parse_count("--threads", arg, 1, 1024, &o->threads);
+    case OPT_ISA: return parse_isa(arg);
     case OPT_SIZE: return parse_size(arg, o);
     case OPT_EYE: return parse_vector("--eye", arg, o->eye, &o->have_eye);
     case OPT_AT: return parse_vector("--at", arg, o->at, &o->have_at);
@@ -248,6 +267,7 @@ static const struct option long_options[] = {
     {"depth", no_argument, NULL, OPT_DEPTH},
     {"normals", no_argument, NULL, OPT_NORMALS},
     {"threads", required_argument, NULL, 'j'},
+    {"isa", required_argument, NULL, OPT_ISA},
     {"precision", required_argument, NULL, 'p'},
     {"compare", no_argument, NULL, OPT_COMPARE},
     {"output-dir", required_argument, NULL, OPT_OUTPUT_DIR},

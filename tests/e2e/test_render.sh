@@ -68,3 +68,5 @@ check  "no temporary left"       test -z "$(ls -A "$imgdir" | grep -v -e '^spher
 expect "compare missing dir"     1 '' "~$e2e_tmp/none/render-gouraud-1024.exr" -- render --compare --size 8x8 --output-dir "$e2e_tmp/none"
 expect "compare fixes its plan"  2 '' 'error: render: --compare renders its own plan (Gouraud at 1024, 6320, 40000 triangles, Phong at 6320, exact): --shading does not apply' -- render --compare --shading phong
 expect "compare fixes triangles" 2 '' 'error: render: --compare renders its own plan (Gouraud at 1024, 6320, 40000 triangles, Phong at 6320, exact): --triangles does not apply' -- render --compare --triangles 100
+expect "isa scalar"              0 '' '' -- render --size 16x16 --isa scalar -o "$imgdir/isa.exr"
+expect "bad isa"                 2 '' 'error: render: --isa neon: expected scalar, sse4.1 or avx2' -- render --isa neon -o "$imgdir/isa.exr"
