@@ -32,10 +32,14 @@ static void run_sleef(const sc_batch_args *a, sleef1 f1, sleef2 f2)
         a->out[0][i + k] = r[k];
 }
 
+/* wrappers: SLEEF declares its functions as returning const __m256, a type clang will not
+ * convert to sleef1/sleef2 */
 #define LOOP1(name, fn)                                                                           \
-    static void name(const sc_batch_args *a) { run_sleef(a, fn, NULL); }
+    static __m256 lane_##name(__m256 x) { return fn(x); }                                        \
+    static void name(const sc_batch_args *a) { run_sleef(a, lane_##name, NULL); }
 #define LOOP2(name, fn)                                                                           \
-    static void name(const sc_batch_args *a) { run_sleef(a, NULL, fn); }
+    static __m256 lane_##name(__m256 x, __m256 y) { return fn(x, y); }                           \
+    static void name(const sc_batch_args *a) { run_sleef(a, NULL, lane_##name); }
 LOOP2(pow_u10, Sleef_powf8_u10avx2)
 LOOP1(exp_u10, Sleef_expf8_u10avx2)
 LOOP1(exp2_u10, Sleef_exp2f8_u10avx2)
