@@ -121,11 +121,19 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 
 # ---- tests -------------------------------------------------------------------
 # `check` = unit + e2e with this compiler, the same under ASan+UBSan, then the fuzz smoke.
+# Each stage builds in parallel (JOBS, default the number of processors), then runs its tests
+# one stage at a time so that their reports do not interleave.
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 check: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) test-bins
 	@$(MAKE) --no-print-directory unit e2e
+	@$(MAKE) --no-print-directory -j$(JOBS) SAN=1 BUILD=$(BUILD)-san test-bins
 	@$(MAKE) --no-print-directory SAN=1 BUILD=$(BUILD)-san unit e2e
 	@$(MAKE) --no-print-directory fuzz
 	@echo "check: all test stages passed ($(CCNAME))"
+
+.PHONY: test-bins
+test-bins: $(UNIT_BINS) $(BIN)
 
 unit: $(UNIT_BINS)
 	@sh tests/run-unit.sh $(UNIT_BINS)
@@ -143,7 +151,7 @@ SANFLAGS += -fsanitize=fuzzer-no-link
 endif
 
 fuzz: deps
-	@$(MAKE) --no-print-directory CC=$(FUZZ_CC) BUILD=build-fuzz SAN=1 FUZZ=1 fuzz-bins
+	@$(MAKE) --no-print-directory -j$(JOBS) CC=$(FUZZ_CC) BUILD=build-fuzz SAN=1 FUZZ=1 fuzz-bins
 	@sh tests/fuzz/run.sh $(FUZZ_SECONDS) $(FUZZ_BINS)
 
 .PHONY: fuzz-bins
