@@ -149,13 +149,21 @@ static const float log2_c8[9] = {0.1231096846719146f,  -0.20586188051276055f,
                                  0.48091075345941253f, -0.7213474682495624f,
                                  1.4426950035679822f};
 
-/* x = m·2^e with m in [√½, √2) by integer arithmetic on the bits (musl logf's offset trick);
- * log2 x = e + t·q(t), t = m − 1. Subnormal inputs count as 0 (−Inf), x < 0 is NaN. */
-static inline vf log2_fast(vf x, const float *c, int n)
+/* x = m · 2^e with m in [√½, √2), for positive normal x, by integer arithmetic on the float
+ * bits (musl logf's offset trick): both m and e exact in float. */
+static inline void log_split(vf x, vf *m, vf *e)
 {
     vi ix = vi_sub(vf_as_vi(x), vi_set1(0x3f3504f3));
-    vf e = vi_to_vf(vi_sra23(ix));
-    vf m = vi_as_vf(vi_add(vi_and(ix, vi_set1(0x007fffff)), vi_set1(0x3f3504f3)));
+    *e = vi_to_vf(vi_sra23(ix));
+    *m = vi_as_vf(vi_add(vi_and(ix, vi_set1(0x007fffff)), vi_set1(0x3f3504f3)));
+}
+
+/* log2 x = e + t·q(t), t = m − 1 (log_split). Subnormal inputs count as 0 (−Inf), x < 0 is
+ * NaN. */
+static inline vf log2_fast(vf x, const float *c, int n)
+{
+    vf m, e;
+    log_split(x, &m, &e);
     vf t = vf_sub(m, vf_set1(1.0f));
     vf r = vf_fma(t, poly(t, c, n), e);
     r = vf_select(vf_lt(x, vf_set1(FLT_MIN)), vf_set1(-INFINITY), r);
@@ -259,15 +267,6 @@ static inline vd log_m_d(vd m, int terms)
 {
     vd s = vd_div(vd_sub(m, vd_set1(1.0)), vd_add(m, vd_set1(1.0)));
     return vd_mul(vd_mul(vd_set1(2.0), s), vd_horner(vd_mul(s, s), inv_odd, terms));
-}
-
-/* x = m · 2^e with m in [√½, √2), for positive normal x, by integer arithmetic on the float
- * bits (as log2_fast): both m and e exact in float. */
-static inline void log_split(vf x, vf *m, vf *e)
-{
-    vi ix = vi_sub(vf_as_vi(x), vi_set1(0x3f3504f3));
-    *e = vi_to_vf(vi_sra23(ix));
-    *m = vi_as_vf(vi_add(vi_and(ix, vi_set1(0x007fffff)), vi_set1(0x3f3504f3)));
 }
 
 /* log2 x = e + log m / ln 2 on one half (m, e from log_split), with `terms` series terms */

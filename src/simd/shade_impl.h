@@ -84,9 +84,8 @@ static SC_INLINE vf tier_sqrt(int tier, vf x)
  * slower than bits8 for that alone). */
 static SC_INLINE vf lobe_pow_fast(vf x, vf y, const float *lc, int ln, const float *ec, int en)
 {
-    vi ix = vi_sub(vf_as_vi(x), vi_set1(0x3f3504f3));
-    vf e = vi_to_vf(vi_sra23(ix));
-    vf m = vi_as_vf(vi_add(vi_and(ix, vi_set1(0x007fffff)), vi_set1(0x3f3504f3)));
+    vf m, e;
+    log_split(x, &m, &e);
     vf u = vf_sub(m, vf_set1(1.0f));
     vf t = vf_mul(y, vf_fma(u, poly(u, lc, ln), e));
     vf tc = vf_max(t, vf_set1(-125.0f));
