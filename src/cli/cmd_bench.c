@@ -22,8 +22,8 @@ static void usage(FILE *out)
             "  -l, --list          the table of kernels, tiers, bounds and domains\n"
             "  -i, --isa LIST      instruction sets, e.g. avx2,scalar (default: all supported)\n"
             "  -t, --tier LIST     tiers, e.g. u1,bits12 (default: all)\n"
-            "  -n, --n LIST        element counts (default 4096,4194304: in cache, streaming)\n"
-            "  -r, --repeat K      timed repeats per row, 1..64 (default 7)\n"
+            "  -n, --n LIST        element counts (default 4096,8388608: in cache, streaming)\n"
+            "  -r, --repeat K      timed repeats per row, 1..64 (default 5)\n"
             "  -f, --format F      table|csv|json (default table)\n"
             "  -h, --help          this help\n"
             "The scalar accurate kernel and the libm loop are always measured (the baselines).\n");
@@ -105,7 +105,7 @@ static int parse_sizes(char *s, options *o)
         o->run.sizes[i] = (size_t)v;
     }
     if (n <= 0) {
-        sc_error("bench: --n: expected at most 4 counts, such as 4096,4194304");
+        sc_error("bench: --n: expected at most 4 counts, such as 4096,8388608");
         return SC_EXIT_USAGE;
     }
     o->run.n_sizes = n;
@@ -181,7 +181,7 @@ static int parse_options(int argc, char **argv, options *o)
 
 static int run(int argc, char **argv)
 {
-    options o = {{{0}, 0, 0, {0}, 0, {4096, 4194304}, 2, 7}, 0, 0};
+    options o = {{{0}, 0, 0, {0}, 0, {4096, 8388608}, 2, 5}, 0, 0};
     int status = parse_options(argc, argv, &o);
     if (status != SC_EXIT_OK)
         return status < 0 ? SC_EXIT_OK : status;
