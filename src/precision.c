@@ -141,6 +141,17 @@ static int plain_integer(char *buf, size_t size, const char *g)
     return snprintf(buf, size, "%s", out);
 }
 
+/* 1 if x printed with `digits` significant digits reads back as x in precision p (into tmp) */
+static int round_trips(char *tmp, size_t size, double x, sc_prec p, int digits)
+{
+    snprintf(tmp, size, "%.*g", digits, x);
+    double back = strtod(tmp, NULL);
+    /* lowp saturates: a decimal beyond its range would read back only by saturation */
+    return sc_round(p, back) == x && (p != SC_LOWP || fabs(back) <= SC_LOWP_MAX + 0x1p-9);
+}
+
+/* The fewest digits that read back, by bisection: reading back is monotonic in the digit count
+ * (more digits are never farther from x). binary32 and binary16 need at most 9, binary64 17. */
 int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
 {
     if (isnan(x))
@@ -148,13 +159,15 @@ int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
     if (isinf(x))
         return snprintf(buf, size, x < 0 ? "-inf" : "inf");
     char tmp[64];
-    for (int digits = 1; digits <= 17; digits++) {
-        snprintf(tmp, sizeof tmp, "%.*g", digits, x);
-        double back = strtod(tmp, NULL);
-        /* lowp saturates: a decimal beyond its range would read back only by saturation */
-        if (sc_round(p, back) == x && (p != SC_LOWP || fabs(back) <= SC_LOWP_MAX + 0x1p-9))
-            break;
+    int lo = 1, hi = p == SC_HIGHP || p == SC_MEDIUMP ? 9 : 17;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (round_trips(tmp, sizeof tmp, x, p, mid))
+            hi = mid;
+        else
+            lo = mid + 1;
     }
+    round_trips(tmp, sizeof tmp, x, p, lo);
     int plain = plain_integer(buf, size, tmp);
     return plain >= 0 ? plain : snprintf(buf, size, "%s", tmp);
 }
