@@ -19,6 +19,8 @@
  * reference: the accurate tier, the algorithm of the scalar highp built-ins), `u4`, `bits12`
  * (relative error <= 2^-12), `bits8` (<= 2^-8). Inputs and outputs are separate float arrays, any
  * n, any alignment; outputs may not alias inputs. A kernel computes only the terms it names.
+ * One-input kernels write outputs of 2^21 elements or more with non-temporal stores (past the
+ * caches: the output line is not read before it is written).
  */
 #ifndef SHADECALC_BATCH_H
 #define SHADECALC_BATCH_H

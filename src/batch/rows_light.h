@@ -17,7 +17,7 @@
     ROWS_P(spot_opengl, bits12, 1, 1, 0, B12, 0, "-1 <= cos <= 1", COS_RANGE, 30, SPOT_P)
     ROWS_P(spot_directx, u16, 1, 1, 16, 0, 0, "-1 <= cos <= 1, exponent <= 8 (error (1 + 1.5 exponent) ULP)", COS_RANGE, 75, SPOT_P)
     ROWS_P(spot_directx, bits12, 1, 1, 0, B12, 0x1p-125, "-1 <= cos <= 1 (results below 2^-125 flush to 0)", COS_RANGE, 35, SPOT_P)
-    ROWS_P(spot_smoothstep, u4, 1, 1, 4, 0, 0, "-1 <= cos <= 1", COS_RANGE, 10, SPOT_P)
+    ROWS_P(spot_smoothstep, u8, 1, 1, 8, 0, 0, "-1 <= cos <= 1", COS_RANGE, 10, SPOT_P)
     ROWS_P(brdf, bits16, 9, 3, 0, 0x1p-16, 0x1p-20, BRDF_DOM, VEC(sc_batch_gen_brdf), 80, BRDF_P)
     ROWS_P(brdf, bits12, 9, 3, 0, B12, B12, "as bits16", VEC(sc_batch_gen_brdf), 80, BRDF_P)
     ROWS_P(brdf, bits8, 9, 3, 0, B8, B8, "as bits16", VEC(sc_batch_gen_brdf), 80, BRDF_P)

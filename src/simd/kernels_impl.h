@@ -13,6 +13,7 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "shadecalc/batch.h"
 #include "shadecalc/glsl.h"
@@ -34,21 +35,40 @@
 typedef vf (*lane1_fn)(vf);
 typedef vf (*lane2_fn)(vf, vf);
 
+/* Elements [start, start + count) of a one-input kernel through a buffer padded with 1
+ * (count < VW: the tail, or the elements before the first aligned output vector). */
+static SC_INLINE void partial1(const float *x, float *out, size_t start, size_t count, lane1_fn f)
+{
+    float bx[VW], bo[VW];
+    for (size_t k = 0; k < (size_t)VW; k++)
+        bx[k] = k < count ? x[start + k] : 1.0f;
+    vf_storeu(bo, f(vf_loadu(bx)));
+    for (size_t k = 0; k < count; k++)
+        out[start + k] = bo[k];
+}
+
+/* Arrays past this many elements stream their output with non-temporal stores: it leaves the
+ * caches to the inputs and saves the read of each output line before it is written. */
+enum { STREAM_MIN = 1 << 21 };
+
 static SC_INLINE void run1(const sc_batch_args *a, lane1_fn f)
 {
     const float *x = a->in[0];
     float *out = a->out[0];
-    size_t i = 0;
-    for (; i + VW <= a->n; i += VW)
-        vf_storeu(out + i, f(vf_loadu(x + i)));
-    if (i < a->n) {
-        float bx[VW], bo[VW];
-        for (int k = 0; k < VW; k++)
-            bx[k] = i + (size_t)k < a->n ? x[i + (size_t)k] : 1.0f;
-        vf_storeu(bo, f(vf_loadu(bx)));
-        for (size_t k = 0; i + k < a->n; k++)
-            out[i + k] = bo[k];
+    size_t i = 0, n = a->n;
+    size_t misalign = (uintptr_t)out % (VW * sizeof(float));
+    if (n >= STREAM_MIN && misalign % sizeof(float) == 0) {
+        size_t peel = misalign ? (VW * sizeof(float) - misalign) / sizeof(float) : 0;
+        partial1(x, out, 0, peel, f);
+        for (i = peel; i + VW <= n; i += VW)
+            vf_stream(out + i, f(vf_loadu(x + i)));
+        vf_stream_fence();
+    } else {
+        for (; i + VW <= n; i += VW)
+            vf_storeu(out + i, f(vf_loadu(x + i)));
     }
+    if (i < n)
+        partial1(x, out, i, n - i, f);
 }
 
 static SC_INLINE void run2(const sc_batch_args *a, lane2_fn f)

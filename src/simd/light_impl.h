@@ -268,7 +268,7 @@ FUNC_KERNEL(spot_opengl_u1, ACCURATE, spot_opengl, spot_setup_opengl)
 FUNC_KERNEL(spot_opengl_bits12, FAST12, spot_opengl, spot_setup_opengl)
 FUNC_KERNEL(spot_directx_u16, ACCURATE, spot_directx, spot_setup_penumbra)
 FUNC_KERNEL(spot_directx_bits12, FAST12, spot_directx, spot_setup_penumbra)
-FUNC_KERNEL(spot_smoothstep_u4, ACCURATE, spot_smoothstep, spot_setup_penumbra)
+FUNC_KERNEL(spot_smoothstep_u8, ACCURATE, spot_smoothstep, spot_setup_penumbra)
 
 /* ---- BRDFs (SPEC §6, brdf.h): in l, v, n; out f (or f cos θ_i) as r, g, b ----
  *

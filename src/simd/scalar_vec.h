@@ -18,6 +18,9 @@ typedef int32_t vi;
 
 static inline vf vf_loadu(const float *p) { return *p; }
 static inline void vf_storeu(float *p, vf x) { *p = x; }
+/* one lane has no non-temporal store: an ordinary one */
+static inline void vf_stream(float *p, vf x) { *p = x; }
+static inline void vf_stream_fence(void) {}
 static inline vf vf_set1(float x) { return x; }
 static inline vf vf_add(vf a, vf b) { return a + b; }
 static inline vf vf_sub(vf a, vf b) { return a - b; }

@@ -289,7 +289,7 @@ static void spot_by_hand(void **state)
     assert_int_equal(sc_batch_run("spot_opengl", "u1", &a), 0);
     assert_true(out[0] == 1.0f && out[3] == 1.0f);
     for (int t = 0; t < 2; t++) {
-        assert_int_equal(sc_batch_run(t ? "spot_smoothstep" : "spot_directx", t ? "u4" : "u16", &a), 0);
+        assert_int_equal(sc_batch_run(t ? "spot_smoothstep" : "spot_directx", t ? "u8" : "u16", &a), 0);
         /* cos 30° rounded to float is below or above the double cosine: 1 exactly when above */
         float at_edge = (double)c30 >= cos(30.0 * pi / 180.0) ? 1.0f : 0.0f;
         assert_true(out[0] == 0.0f && out[1] == at_edge && out[2] == 0.0f && out[3] == 1.0f);

@@ -19,6 +19,9 @@ typedef __m256i vl;
 
 static inline vf vf_loadu(const float *p) { return _mm256_loadu_ps(p); }
 static inline void vf_storeu(float *p, vf x) { _mm256_storeu_ps(p, x); }
+/* a non-temporal store (p aligned to 32 bytes), and the fence after a run of them */
+static inline void vf_stream(float *p, vf x) { _mm256_stream_ps(p, x); }
+static inline void vf_stream_fence(void) { _mm_sfence(); }
 static inline vf vf_set1(float x) { return _mm256_set1_ps(x); }
 static inline vf vf_add(vf a, vf b) { return _mm256_add_ps(a, b); }
 static inline vf vf_sub(vf a, vf b) { return _mm256_sub_ps(a, b); }
