@@ -11,18 +11,8 @@
 #include "shadecalc/brdf.h"
 #include "shadecalc/light.h"
 
-/* ---- pow and exp by tier; the u1 ones hand NaN, infinities and zeros to the built-ins ---- */
-
-static SC_INLINE vf light_pow(int tier, vf x, vf y)
-{
-    if (tier != ACCURATE)
-        return tier == FAST12 ? pow_bits12(x, y) : pow_bits8(x, y);
-#ifdef SIMD_HAS_DOUBLE
-    return pow_u1(x, y);
-#else
-    return sc_powf(x, y);
-#endif
-}
+/* ---- exp by tier (pow: light_pow of src/simd/spot_impl.h); the u1 one hands NaN and
+ * infinities to the built-in ---- */
 
 static SC_INLINE vf light_exp(int tier, vf x)
 {
@@ -35,17 +25,7 @@ static SC_INLINE vf light_exp(int tier, vf x)
 #endif
 }
 
-static SC_INLINE vf vf_clamp(vf x, float lo, float hi)
-{
-    return vf_min(vf_max(x, vf_set1(lo)), vf_set1(hi));
-}
-
 /* ---- one input, one output: attenuation of r and spot of cos θ_s ---- */
-
-enum { MAX_UNIFORMS = 6 };
-typedef struct {
-    float k[MAX_UNIFORMS]; /* named by each function's setup */
-} func_uniforms;
 
 typedef vf (*func_fn)(int tier, vf x, const func_uniforms *u);
 typedef void (*func_setup_fn)(const void *params, func_uniforms *u);
@@ -185,84 +165,8 @@ FUNC_KERNEL(atten_pixar_u4, ACCURATE, atten_pixar, atten_setup_pixar)
 FUNC_KERNEL(atten_pixar_bits12, FAST12, atten_pixar, atten_setup_pixar)
 FUNC_KERNEL(atten_windowed_u12, ACCURATE, atten_windowed, atten_setup_windowed)
 
-/* -- spot (SPEC §4): the cone's cosines in double, rounded toward the inside of each test so
- * that cos θ_s >= cos θ_p and cos θ_s <= cos θ_u decide as in double -- */
-
-static const double deg = 3.14159265358979323846 / 180.0;
-
-static float float_at_least(double x) /* the least float >= x */
-{
-    float f = (float)x;
-    return (double)f < x ? nextafterf(f, INFINITY) : f;
-}
-
-static float float_at_most(double x)
-{
-    float f = (float)x;
-    return (double)f > x ? nextafterf(f, -INFINITY) : f;
-}
-
-/* k: cos θ_u (at least), exponent, 1 for no cone */
-static inline void spot_setup_opengl(const void *params, func_uniforms *u)
-{
-    const sc_batch_spot_params *p = params;
-    *u = (func_uniforms){{float_at_least(cos(p->cutoff * deg)), p->exponent,
-                          p->cutoff == 180.0f ? 1.0f : 0.0f}};
-}
-
-/* k: cos θ_p (at least), cos θ_u (at most) as hi + lo, 1/(cos θ_p − cos θ_u), exponent: the
- * ramp (cos θ_s − cos θ_u)/(cos θ_p − cos θ_u) keeps its relative accuracy near the edge */
-static inline void spot_setup_penumbra(const void *params, func_uniforms *u)
-{
-    const sc_batch_spot_params *p = params;
-    double cp = cos(p->inner * deg), cu = cos(p->outer * deg);
-    float cu_hi = float_at_most(cu);
-    *u = (func_uniforms){{float_at_least(cp), cu_hi, (float)(cu - cu_hi),
-                          cp > cu ? (float)(1.0 / (cp - cu)) : 0.0f, p->exponent}};
-}
-
-/* x^e with pow(0, 0) = 1 and 0 for x <= 0 (the cosine lobes, light.c lobe_pow); those lanes
- * take the base 1/2, not 0 or 1, which the u1 pow would hand to the scalar built-in. */
-static SC_INLINE vf lobe_pow(int tier, vf x, float e)
-{
-    if (e == 0.0f)
-        return vf_set1(1.0f);
-    vf pos = vf_lt(vf_set1(0.0f), x);
-    return vf_select(pos, light_pow(tier, vf_select(pos, x, vf_set1(0.5f)), vf_set1(e)), vf_set1(0.0f));
-}
-
-static SC_INLINE vf spot_opengl(int tier, vf c, const func_uniforms *u)
-{
-    if (u->k[2] != 0.0f)
-        return vf_set1(1.0f);
-    return vf_select(vf_le(vf_set1(u->k[0]), c), lobe_pow(tier, c, u->k[1]), vf_set1(0.0f));
-}
-
-/* 1 inside the inner cone, 0 outside the outer one, else shape(ramp) */
-static SC_INLINE vf penumbra(vf c, const func_uniforms *u, vf shaped)
-{
-    vf f = vf_select(vf_le(c, vf_set1(u->k[1])), vf_set1(0.0f), shaped);
-    return vf_select(vf_le(vf_set1(u->k[0]), c), vf_set1(1.0f), f);
-}
-
-static SC_INLINE vf ramp(vf c, const func_uniforms *u)
-{
-    vf t = vf_sub(vf_sub(c, vf_set1(u->k[1])), vf_set1(u->k[2]));
-    return vf_clamp(vf_mul(t, vf_set1(u->k[3])), 0.0f, 1.0f);
-}
-
-static SC_INLINE vf spot_directx(int tier, vf c, const func_uniforms *u)
-{
-    return penumbra(c, u, lobe_pow(tier, ramp(c, u), u->k[4]));
-}
-
-/* pbrt-v4: smoothstep t²(3 − 2t) */
-static SC_INLINE vf spot_smoothstep(int tier, vf c, const func_uniforms *u)
-{
-    (void)tier;
-    vf t = ramp(c, u);
-    return penumbra(c, u, vf_mul(vf_mul(t, t), vf_fma(vf_set1(-2.0f), t, vf_set1(3.0f))));
-}
+/* -- spot (SPEC §4): the functions and their setup are in src/simd/spot_impl.h, shared with
+ * the shading kernel -- */
 
 FUNC_KERNEL(spot_opengl_u1, ACCURATE, spot_opengl, spot_setup_opengl)
 FUNC_KERNEL(spot_opengl_bits12, FAST12, spot_opengl, spot_setup_opengl)

@@ -108,6 +108,8 @@ static SC_INLINE vf tier_pow(int tier, vf x, vf y)
 #endif
 }
 
+#include "simd/spot_impl.h"
+
 /* ---- vec3 ---- */
 
 typedef struct {
@@ -238,30 +240,11 @@ static SC_INLINE vf specular(int tier, int nt, sc_batch_brdf brdf, const sc_batc
     return vf_mul(vf_mul(D, V), F);
 }
 
-/* The spot factor of cos θ_s (shadecalc/batch.h, SPEC §4); the light's kind is uniform. */
-static SC_INLINE vf spot_factor(int tier, const sc_batch_light *lt, vf cos_s)
-{
-    vf one = vf_set1(1.0f), zero = vf_set1(0.0f);
-    if (lt->spot == SC_BATCH_SPOT_OPENGL) {
-        if (lt->cos_outer <= -1.0f)
-            return one; /* a cutoff of 180°: no cone */
-        vf p = tier_pow(tier, vf_max(cos_s, vf_set1(FLT_MIN)), vf_set1(lt->exponent));
-        return vf_select(vf_lt(cos_s, vf_set1(lt->cos_outer)), zero, p);
-    }
-    if (!(lt->cos_inner > lt->cos_outer)) /* inner = outer: a hard edge */
-        return vf_select(vf_lt(cos_s, vf_set1(lt->cos_inner)), zero, one);
-    vf ramp = vf_mul(vf_sub(cos_s, vf_set1(lt->cos_outer)), vf_set1(1.0f / (lt->cos_inner - lt->cos_outer)));
-    vf t = vf_min(vf_max(ramp, zero), one);
-    vf f = lt->spot == SC_BATCH_SPOT_SMOOTHSTEP
-               ? vf_mul(vf_mul(t, t), vf_fma(vf_set1(-2.0f), t, vf_set1(3.0f)))
-               : tier_pow(tier, vf_max(t, vf_set1(FLT_MIN)), vf_set1(lt->exponent));
-    return vf_select(vf_le(ramp, zero), zero, vf_select(vf_le(one, ramp), one, f));
-}
-
 /* Direction to light k and its irradiance factor: 1 (directional), or I_L / max(r², 10^-4)
- * times the spot factor; at the light itself (r = 0) l = n, as light.h has it. */
-static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt, v3 n,
-                              const float *const *in, size_t i, vf *falloff)
+ * times the spot factor (spot: its uniforms); at the light itself (r = 0) l = n, as light.h
+ * has it. */
+static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt, const func_uniforms *spot,
+                              v3 n, const float *const *in, size_t i, vf *falloff)
 {
     if (lt->kind == SC_BATCH_DIRECTIONAL) {
         *falloff = vf_set1(1.0f);
@@ -276,7 +259,7 @@ static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt, v3 n,
              vf_select(at_light, n.z, l.z)};
     if (lt->kind == SC_BATCH_SPOT) {
         vf cos_s = vf_sub(vf_set1(0.0f), v3_dot(l, v3_set1(lt->dir)));
-        *falloff = vf_mul(*falloff, spot_factor(tier, lt, cos_s));
+        *falloff = vf_mul(*falloff, spot_factor(tier, lt->spot, cos_s, spot));
     }
     return l;
 }
@@ -285,7 +268,8 @@ static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt, v3 n,
  * per BRDF, chosen once per call), so that the lobe is straight-line code. Colours are v3
  * (x, y, z = r, g, b). */
 static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *const *in,
-                                 float *const *out, size_t i, const sc_batch_scene *s)
+                                 float *const *out, size_t i, const sc_batch_scene *s,
+                                 const func_uniforms *spots)
 {
     int nt = tier == FAST8 ? FAST12 : tier;
     v3 n = v3_normalize(nt, v3_load(in, 0, i)), v = v3_normalize(nt, v3_load(in, 3, i));
@@ -295,7 +279,7 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
     for (int k = 0; k < s->n_lights; k++) {
         const sc_batch_light *lt = &s->lights[k];
         vf falloff;
-        v3 l = light_dir(tier, nt, lt, n, in, i, &falloff);
+        v3 l = light_dir(tier, nt, lt, &spots[k], n, in, i, &falloff);
         vf nl = v3_dot(n, l);
         vm lit = vm_and(vf_lt(vf_set1(0.0f), nl), vf_lt(vf_set1(0.0f), nv));
         vf w = vf_select(lit, vf_mul(nl, falloff), vf_set1(0.0f)); /* cos θ_i · falloff */
@@ -310,12 +294,23 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
     v3_store(acc, out, i);
 }
 
+/* The arguments with, as params, the uniforms of each spot light, computed once per call. */
+static inline sc_batch_args with_spot_uniforms(const sc_batch_args *a, func_uniforms *spots)
+{
+    const sc_batch_scene *s = a->scene;
+    for (int k = 0; k < s->n_lights && k < SC_BATCH_MAX_LIGHTS; k++)
+        if (s->lights[k].kind == SC_BATCH_SPOT)
+            spot_uniforms_of_light(&s->lights[k], &spots[k]);
+    sc_batch_args b = *a;
+    b.params = spots;
+    return b;
+}
+
 #define SHADE_LANE(name, tier, brdf)                                                              \
     static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
-                               const sc_batch_scene *s, const void *p)                            \
+                               const sc_batch_scene *s, const void *spots)                        \
     {                                                                                             \
-        (void)p;                                                                                  \
-        shade_tier(tier, brdf, in, out, i, s);                                                    \
+        shade_tier(tier, brdf, in, out, i, s, spots);                                             \
     }
 #define SHADE_KERNEL(name, tier)                                                                  \
     SHADE_LANE(name##_lambert, tier, SC_BATCH_LAMBERT)                                            \
@@ -324,10 +319,12 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
     void K(name)(const sc_batch_args *a);                                                         \
     void K(name)(const sc_batch_args *a)                                                          \
     {                                                                                             \
+        func_uniforms spots[SC_BATCH_MAX_LIGHTS];                                                 \
+        sc_batch_args b = with_spot_uniforms(a, spots);                                           \
         switch (a->scene->brdf) {                                                                 \
-        case SC_BATCH_LAMBERT: run_n(a, 9, 3, name##_lambert); break;                             \
-        case SC_BATCH_BLINN_PHONG: run_n(a, 9, 3, name##_blinn); break;                           \
-        default: run_n(a, 9, 3, name##_ggx); break;                                               \
+        case SC_BATCH_LAMBERT: run_n(&b, 9, 3, name##_lambert); break;                            \
+        case SC_BATCH_BLINN_PHONG: run_n(&b, 9, 3, name##_blinn); break;                          \
+        default: run_n(&b, 9, 3, name##_ggx); break;                                              \
         }                                                                                         \
     }
 SHADE_KERNEL(shade_accurate, ACCURATE)
