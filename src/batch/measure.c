@@ -14,16 +14,18 @@ static int stated(const sc_batch_entry *e, double ref)
     return fabs(ref) >= 0x1p-126 && fabs(ref) <= 0x1.fffffep127;
 }
 
-/* got against ref as a fraction of e's bound: ULPs, or relative error with the absolute
- * allowance times the reference's scale. Both NaN, or the same overflow: 0. */
-static double bound_ratio(const sc_batch_entry *e, float got, double ref, double scale)
+/* got against ref as a fraction of e's bound: ULPs (ulp, already measured), or relative error
+ * with the absolute allowance times the reference's scale. Both NaN, or the same overflow: 0.
+ * A scale of +Inf marks an element outside the stated domain (a discontinuity): 0. */
+static double bound_ratio(const sc_batch_entry *e, float got, double ref, double ulp,
+                          double scale)
 {
     if (isnan(ref) && isnan(got))
         return 0.0;
-    if (isinf((float)ref) && got == (float)ref)
+    if ((isinf((float)ref) && got == (float)ref) || isinf(scale))
         return 0.0;
     if (e->bound_ulp > 0)
-        return sc_ulp_error(SC_HIGHP, (double)got, ref) / e->bound_ulp;
+        return ulp / e->bound_ulp;
     double err = fabs((double)got - ref);
     if (err == 0.0)
         return 0.0;
@@ -48,8 +50,8 @@ double sc_batch_error_against(const sc_batch_entry *e, const sc_batch_args *a, s
         if (!stated(e, ref[j]))
             continue;
         float got = a->out[j][i];
-        double ratio = bound_ratio(e, got, ref[j], ref[e->n_out]);
         double ulp = sc_ulp_error(SC_HIGHP, (double)got, ref[j]);
+        double ratio = bound_ratio(e, got, ref[j], ulp, ref[e->n_out]);
         double abs_err = fabs((double)got - ref[j]);
         worst = fmax(worst, ratio);
         if (isfinite(ulp)) {

@@ -121,8 +121,24 @@ static void light_of(const sc_batch_light *b, sc_light *out)
     out->spot.inner = degrees_of(b->cos_inner);
 }
 
+/* 1 if cos θ_s lies within 2^-16 of a hard edge of the light's cone, where the spot factor
+ * jumps (opengl's cutoff, directx and smoothstep with inner = outer): there a rounding of l
+ * decides between the lit and the unlit value, so no error bound can hold. */
+static int at_hard_edge(const sc_batch_light *lt, double cos_s)
+{
+    double edge;
+    if (lt->kind != SC_BATCH_SPOT)
+        return 0;
+    if (lt->spot == SC_BATCH_SPOT_OPENGL)
+        edge = lt->cos_outer > -1.0f ? lt->cos_outer : 2.0;
+    else
+        edge = lt->cos_inner > lt->cos_outer ? 2.0 : lt->cos_inner;
+    return fabs(cos_s - edge) < 0x1p-16;
+}
+
 /* out[0..2] the radiance; out[3] the scale of the allowance: ambient plus Σ E f without the
- * cosine (an error of ε in n·l, inevitable in float, moves the result by about ε E f). */
+ * cosine (an error of ε in n·l, inevitable in float, moves the result by about ε E f); +Inf
+ * (outside the stated domain) at a hard edge of a spot cone. */
 void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
 {
     const sc_batch_scene *s = a->scene;
@@ -152,6 +168,8 @@ void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
         sc_brdf_terms t;
         sc_brdf_eval(SC_DOUBLE, &b, &frame, ls.l, v, &t);
         double cos_i = dot3(frame.n, ls.l);
+        if (at_hard_edge(&s->lights[k], ls.cos_s))
+            scale = INFINITY;
         for (int c = 0; c < 3; c++) {
             out[c] += cos_i > 0.0 ? t.f[c] * ls.E[c] * cos_i : 0.0;
             scale = fmax(scale, ls.E[c] * (b.diff[c] / 3.141592653589793 + t.specular[c]));
