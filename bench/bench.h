@@ -48,8 +48,7 @@ typedef struct {
     double ns_per_elem, ns_min, ns_max;
     double speedup_vs_scalar, speedup_vs_libm;
     sc_batch_error err;
-    double bound_ulp;     /* the stated bound, or < 0 if stated otherwise */
-    double bound_rel;
+    const sc_batch_entry *entry; /* the table row measured (its bounds); NULL: libm, SLEEF */
     double roofline_ns;   /* max(compute bound, memory bound) per element */
     double roofline_fraction; /* roofline_ns / ns_per_elem */
     int pareto;           /* not beaten in both error and speed among the kernel's rows */

@@ -215,7 +215,6 @@ static bench_row *add_row(bench_state *st, const char *kernel, const char *isa, 
     r->tier = tier;
     r->scene = scene;
     r->n = n;
-    r->bound_ulp = -1.0;
     return r;
 }
 
@@ -241,8 +240,7 @@ static void measure_entry(bench_state *st, const sc_batch_entry *e, bench_data *
     sc_batch_args a = data_args(d);
     time_fn(e->fn, &a, st->o->repeat, r);
     accuracy(e, d, r);
-    r->bound_ulp = e->bound_ulp > 0 ? e->bound_ulp : -1.0;
-    r->bound_rel = e->bound_rel;
+    r->entry = e;
     roofline(st, e, d, bench_isa_width(e->isa), r);
     char what[96];
     snprintf(what, sizeof what, "%s %s %s %s", e->kernel, sc_isa_name(e->isa), e->tier, scene_name);

@@ -4,9 +4,12 @@
 
 #include "bench/bench.h"
 
+/* The stated bound of a table row as text ("4 ulp", "rel 2^-12 + abs"); "-" for none. */
 static const char *bound_text(const sc_batch_entry *e, char *buf, size_t size)
 {
-    if (e->bound_ulp > 0)
+    if (!e)
+        snprintf(buf, size, "-");
+    else if (e->bound_ulp > 0)
         snprintf(buf, size, "%g ulp", e->bound_ulp);
     else if (e->bound_rel > 0)
         snprintf(buf, size, "rel 2^%d%s", (int)lround(log2(e->bound_rel)), e->bound_abs > 0 ? " + abs" : "");
@@ -48,17 +51,20 @@ void bench_list(FILE *out, int format)
     }
 }
 
+/* The row's bound in ULP, or NaN where it is stated otherwise (or not at all) */
+static double stated_ulp(const bench_row *r)
+{
+    return r->entry && r->entry->bound_ulp > 0 ? r->entry->bound_ulp : NAN;
+}
+
 static void table_row(FILE *out, const bench_row *r)
 {
-    char bound[32] = "-", roof[16] = "-";
-    if (r->bound_ulp > 0)
-        snprintf(bound, sizeof bound, "%g ulp", r->bound_ulp);
-    else if (r->bound_rel > 0)
-        snprintf(bound, sizeof bound, "2^%d", (int)lround(log2(r->bound_rel)));
+    char bound[32], roof[16] = "-";
+    bound_text(r->entry, bound, sizeof bound);
     if (isfinite(r->roofline_fraction))
         snprintf(roof, sizeof roof, "%.0f%%", 100.0 * r->roofline_fraction);
     fprintf(out,
-            "%-11s %-17s %-10s %-8s %8zu %8.3f %8.3f %8.3f %7.1f %6.2f %6.2f %9.3g %7.3f %9.2e %-8s "
+            "%-11s %-17s %-10s %-8s %8zu %8.3f %8.3f %8.3f %7.1f %6.2f %6.2f %9.3g %7.3f %9.2e %-16s "
             "%6s %s\n",
             r->kernel, r->scene[0] ? r->scene : "-", r->isa, r->tier, r->n, r->ns_per_elem,
             r->ns_min, r->ns_max, 1e3 / r->ns_per_elem, r->speedup_vs_scalar, r->speedup_vs_libm,
@@ -82,7 +88,7 @@ static void csv_row(FILE *out, const bench_row *r)
             r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0, r->err.max_rel,
             r->err.max_abs);
     csv_number(out, r->roofline_ns, ",");
-    csv_number(out, r->bound_ulp > 0 ? r->bound_ulp : NAN, ",");
+    csv_number(out, stated_ulp(r), ",");
     csv_number(out, r->roofline_fraction, ",");
     fprintf(out, "%d\n", r->pareto);
 }
@@ -110,11 +116,8 @@ static void json_row(FILE *out, const bench_row *r, int last)
     json_number(out, "mean_ulp", r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0, 1);
     json_number(out, "max_rel", r->err.max_rel, 1);
     json_number(out, "max_abs", r->err.max_abs, 1);
-    if (r->bound_ulp > 0)
-        json_number(out, "bound_ulp", r->bound_ulp, 1);
-    else
-        fprintf(out, "\"bound_ulp\": null, ");
-    json_number(out, "bound_rel", r->bound_rel, 1);
+    json_number(out, "bound_ulp", stated_ulp(r), 1); /* null where stated otherwise */
+    json_number(out, "bound_rel", r->entry ? r->entry->bound_rel : 0.0, 1);
     json_number(out, "roofline_ns", r->roofline_ns, 1);
     json_number(out, "roofline_fraction", r->roofline_fraction, 1);
     fprintf(out, "\"pareto\": %s}%s\n", r->pareto ? "true" : "false", last ? "" : ",");
@@ -142,7 +145,7 @@ void bench_report(FILE *out, int format, const bench_machine *m, const bench_row
     fprintf(out, "# %s; stream bandwidth %.3g GB/s; peak %.3g float lane-ops/ns at 8 lanes (an FMA "
                  "counts one)\n",
             m->cpu, m->bandwidth, m->lane_ops_ns);
-    fprintf(out, "%-11s %-17s %-10s %-8s %8s %8s %8s %8s %7s %6s %6s %9s %7s %9s %-8s %6s %s\n",
+    fprintf(out, "%-11s %-17s %-10s %-8s %8s %8s %8s %8s %7s %6s %6s %9s %7s %9s %-16s %6s %s\n",
             "kernel", "scene", "isa", "tier", "n", "ns/elem", "min", "max", "Melem/s", "xscal",
             "xlibm", "max_ulp", "mean", "max_rel", "bound", "roof", "pareto");
     for (int i = 0; i < n; i++)
