@@ -9,6 +9,7 @@
 #include "shadecalc/accuracy.h"
 #include "shadecalc/brdf.h"
 #include "shadecalc/light.h"
+#include "shadecalc/vec.h"
 
 #define REF1(name, expr)                                                                          \
     void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out)                       \
@@ -41,45 +42,49 @@ static double dot3(const double a[3], const double b[3])
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/* dot: the error allowance scales with Σ|a_k b_k| (cancellation) */
-void sc_batch_ref_dot(const sc_batch_args *a, size_t i, double *out)
+/* components first..first+2 of element i, as the library's double vector (vec.h), whose
+ * dot, length, normalize and reflect are the references of the vec3 kernels */
+static sc_dvec3 vec_at(const sc_batch_args *a, int first, size_t i)
 {
-    double u[3], v[3];
-    load3(a, 0, i, u);
-    load3(a, 3, i, v);
-    out[0] = dot3(u, v);
-    out[1] = fabs(u[0] * v[0]) + fabs(u[1] * v[1]) + fabs(u[2] * v[2]);
+    return sc_dvec3_make(a->in[first][i], a->in[first + 1][i], a->in[first + 2][i]);
 }
 
+/* Σ|a_k b_k|: the dot product's error allowance scales with it (cancellation) */
+static double abs_dot(sc_dvec3 u, sc_dvec3 v)
+{
+    return fabs(u.x * v.x) + fabs(u.y * v.y) + fabs(u.z * v.z);
+}
+
+void sc_batch_ref_dot(const sc_batch_args *a, size_t i, double *out)
+{
+    sc_dvec3 u = vec_at(a, 0, i), v = vec_at(a, 3, i);
+    out[0] = sc_dvec3_dot(u, v);
+    out[1] = abs_dot(u, v);
+}
+
+/* allowance per component: |I_c| + 2 Σ|N_k I_k| |N_c|, the largest */
 void sc_batch_ref_reflect(const sc_batch_args *a, size_t i, double *out)
 {
-    double I[3], N[3];
-    load3(a, 0, i, I);
-    load3(a, 3, i, N);
-    double k = 2.0 * dot3(N, I), scale = 0.0;
-    for (int c = 0; c < 3; c++) {
-        out[c] = I[c] - k * N[c];
-        scale = fmax(scale, fabs(I[c]) + 2.0 * (fabs(N[0] * I[0]) + fabs(N[1] * I[1]) +
-                                                fabs(N[2] * I[2])) * fabs(N[c]));
-    }
-    out[3] = scale;
+    sc_dvec3 I = vec_at(a, 0, i), N = vec_at(a, 3, i), r = sc_dvec3_reflect(I, N);
+    double k = 2.0 * abs_dot(N, I);
+    out[0] = r.x;
+    out[1] = r.y;
+    out[2] = r.z;
+    out[3] = fmax(fabs(I.x) + k * fabs(N.x), fmax(fabs(I.y) + k * fabs(N.y), fabs(I.z) + k * fabs(N.z)));
 }
 
 void sc_batch_ref_normalize(const sc_batch_args *a, size_t i, double *out)
 {
-    double u[3];
-    load3(a, 0, i, u);
-    double len = sqrt(dot3(u, u));
-    for (int c = 0; c < 3; c++)
-        out[c] = u[c] / len;
+    sc_dvec3 u = sc_dvec3_normalize(vec_at(a, 0, i));
+    out[0] = u.x;
+    out[1] = u.y;
+    out[2] = u.z;
     out[3] = 1.0; /* components: a relative bound against the unit vector's largest */
 }
 
 void sc_batch_ref_length(const sc_batch_args *a, size_t i, double *out)
 {
-    double u[3];
-    load3(a, 0, i, u);
-    out[0] = sqrt(dot3(u, u));
+    out[0] = sc_dvec3_length(vec_at(a, 0, i));
     out[1] = 1.0;
 }
 
