@@ -187,6 +187,19 @@ static const sc_batch_entry *kernel_entry(const char *kernel, int last)
     return found;
 }
 
+/* Whether entry e is measured among the rows of `kernel`: the kernel's accurate scalar entry
+ * always (the baseline of the speedups), the others if the options select them. */
+static int measured(const bench_options *o, const sc_batch_entry *e, const char *kernel)
+{
+    return strcmp(e->kernel, kernel) == 0 && (e == kernel_entry(kernel, 0) || entry_selected(o, e));
+}
+
+/* SLEEF's loops for a kernel when the binary has them (the count; *loops the first). */
+static int sleef_loops_for(const char *kernel, const bench_sleef **loops)
+{
+    return bench_sleef_available() ? bench_sleef_loops(kernel, loops) : 0;
+}
+
 /* ---- one kernel × scene × size ---- */
 
 typedef struct {
@@ -265,7 +278,7 @@ static void measure_libm(bench_state *st, const sc_batch_entry *accurate, bench_
 static void measure_sleef(bench_state *st, const sc_batch_entry *accurate, bench_data *d)
 {
     const bench_sleef *loops;
-    int n = bench_sleef_available() ? bench_sleef_loops(accurate->kernel, &loops) : 0;
+    int n = sleef_loops_for(accurate->kernel, &loops);
     for (int i = 0; i < n; i++) {
         bench_row *r = add_row(st, accurate->kernel, "sleef-avx2", loops[i].tier, "", d->n);
         if (!r)
@@ -319,12 +332,9 @@ static int measure_group(bench_state *st, const char *kernel, const bench_scene 
     }
     const char *scene_name = bs ? bs->name : "";
     int first = st->n_rows;
-    for (int i = 0; i < sc_batch_count; i++) {
-        const sc_batch_entry *e = &sc_batch_table[i];
-        int baseline = e == accurate;
-        if (strcmp(e->kernel, kernel) == 0 && (baseline || entry_selected(st->o, e)))
-            measure_entry(st, e, &d, scene_name);
-    }
+    for (int i = 0; i < sc_batch_count; i++)
+        if (measured(st->o, &sc_batch_table[i], kernel))
+            measure_entry(st, &sc_batch_table[i], &d, scene_name);
     measure_libm(st, accurate, &d, scene_name);
     measure_sleef(st, accurate, &d);
     speedups(st->rows, first, st->n_rows, accurate->tier);
@@ -353,12 +363,9 @@ static int count_rows(const bench_options *o, const char *const *kernels, int n_
     int total = 0;
     for (int k = 0; k < n_kernels; k++) {
         const bench_sleef *sleef;
-        int per = 1 + (bench_sleef_available() ? bench_sleef_loops(kernels[k], &sleef) : 0);
-        const sc_batch_entry *accurate = kernel_entry(kernels[k], 0);
-        for (int i = 0; i < sc_batch_count; i++) {
-            const sc_batch_entry *e = &sc_batch_table[i];
-            per += strcmp(e->kernel, kernels[k]) == 0 && (e == accurate || entry_selected(o, e));
-        }
+        int per = 1 + sleef_loops_for(kernels[k], &sleef); /* the libm loop, SLEEF's */
+        for (int i = 0; i < sc_batch_count; i++)
+            per += measured(o, &sc_batch_table[i], kernels[k]);
         total += per * (strcmp(kernels[k], "shade") == 0 ? N_SCENES : 1);
     }
     return total * o->n_sizes;
