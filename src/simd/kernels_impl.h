@@ -35,16 +35,29 @@
 typedef vf (*lane1_fn)(vf);
 typedef vf (*lane2_fn)(vf, vf);
 
-/* Elements [start, start + count) of a one-input kernel through a buffer padded with 1
- * (count < VW: the tail, or the elements before the first aligned output vector). */
+/* The first count < VW elements at p, padded with 1 (a harmless input for every kernel), and
+ * the first count lanes of x stored at p: the tails of the drivers. */
+static SC_INLINE vf load_partial(const float *p, size_t count)
+{
+    float b[VW];
+    for (size_t k = 0; k < (size_t)VW; k++)
+        b[k] = k < count ? p[k] : 1.0f;
+    return vf_loadu(b);
+}
+
+static SC_INLINE void store_partial(float *p, vf x, size_t count)
+{
+    float b[VW];
+    vf_storeu(b, x);
+    for (size_t k = 0; k < count; k++)
+        p[k] = b[k];
+}
+
+/* Elements [start, start + count) of a one-input kernel, count < VW (the tail, or the elements
+ * before the first aligned output vector). */
 static SC_INLINE void partial1(const float *x, float *out, size_t start, size_t count, lane1_fn f)
 {
-    float bx[VW], bo[VW];
-    for (size_t k = 0; k < (size_t)VW; k++)
-        bx[k] = k < count ? x[start + k] : 1.0f;
-    vf_storeu(bo, f(vf_loadu(bx)));
-    for (size_t k = 0; k < count; k++)
-        out[start + k] = bo[k];
+    store_partial(out + start, f(load_partial(x + start, count)), count);
 }
 
 /* Arrays past this many elements stream their output with non-temporal stores: it leaves the
@@ -78,17 +91,9 @@ static SC_INLINE void run2(const sc_batch_args *a, lane2_fn f)
     size_t i = 0;
     for (; i + VW <= a->n; i += VW)
         vf_storeu(out + i, f(vf_loadu(x + i), vf_loadu(y + i)));
-    if (i < a->n) {
-        float bx[VW], by[VW], bo[VW];
-        for (int k = 0; k < VW; k++) {
-            int in = i + (size_t)k < a->n;
-            bx[k] = in ? x[i + (size_t)k] : 1.0f;
-            by[k] = in ? y[i + (size_t)k] : 1.0f;
-        }
-        vf_storeu(bo, f(vf_loadu(bx), vf_loadu(by)));
-        for (size_t k = 0; i + k < a->n; k++)
-            out[i + k] = bo[k];
-    }
+    if (i < a->n)
+        store_partial(out + i, f(load_partial(x + i, a->n - i), load_partial(y + i, a->n - i)),
+                      a->n - i);
 }
 
 #define BATCH1(name, lane)                                                                        \

@@ -32,16 +32,14 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
     const float *in[MAX_IN] = {0};
     float *out[MAX_OUT];
     for (int j = 0; j < k; j++) {
-        for (int l = 0; l < VW; l++)
-            tail_in[j][l] = i + (size_t)l < a->n ? a->in[j][i + (size_t)l] : 1.0f;
+        vf_storeu(tail_in[j], load_partial(a->in[j] + i, a->n - i));
         in[j] = tail_in[j];
     }
     for (int j = 0; j < m; j++)
         out[j] = tail_out[j];
     f(in, out, 0, a->scene, a->params);
     for (int j = 0; j < m; j++)
-        for (size_t l = 0; i + l < a->n; l++)
-            a->out[j][i + l] = tail_out[j][l];
+        store_partial(a->out[j] + i, vf_loadu(tail_out[j]), a->n - i);
 }
 
 #define BATCH_N(name, k, m, lane)                                                                 \
