@@ -16,6 +16,7 @@ typedef struct {
     const sc_mesh *mesh;
     sc_framebuffer *fb;
     render_view view;
+    render_shader shader; /* the scene, precision, and the batch kernel's uniforms if it fits */
     raster_tri *tris; /* set-up screen triangles, in mesh order */
     int n_tris;
     unsigned char *front; /* per mesh triangle: 1 if its counter-clockwise side faces the eye */
@@ -131,7 +132,7 @@ static void shade_items(const render_job *job, int count, float *rgb,
         int n = count - start < SPAN ? count - start : SPAN;
         for (int i = 0; i < n; i++)
             fill(job, start + i, &in[i]);
-        render_shade_span(job->p->scene, job->p->prec, job->view.eye, n, in, rgb + 3 * start);
+        render_shade_span(&job->shader, job->view.eye, n, in, rgb + 3 * start);
     }
 }
 
@@ -254,8 +255,8 @@ static void shade_row(const render_job *job, const tile_buffer *buf, int row, in
             gouraud_colour(job, t, buf->b[i], rgb + 3 * n);
         n++;
     }
-    if (mode == SC_SHADING_PHONG || mode == SC_SHADING_EXACT)
-        render_shade_span(job->p->scene, job->p->prec, job->view.eye, n, in, rgb);
+    if (n > 0 && (mode == SC_SHADING_PHONG || mode == SC_SHADING_EXACT))
+        render_shade_span(&job->shader, job->view.eye, n, in, rgb);
     sc_framebuffer *fb = job->fb;
     for (int k = 0; k < n; k++) {
         int i = row * TILE + x_of[k];
@@ -415,6 +416,7 @@ int sc_render(const sc_render_params *p, sc_framebuffer *fb, char *err, size_t e
         return -1;
     render_job job = {.p = p, .mesh = p->mesh, .fb = fb};
     render_view_make(&p->camera, fb->width, fb->height, &job.view);
+    render_shader_init(&job.shader, p->scene, p->prec);
     job.tiles_x = (fb->width + TILE - 1) / TILE;
     job.tiles_y = (fb->height + TILE - 1) / TILE;
     size_t n_faces = (size_t)p->mesh->n_triangles;

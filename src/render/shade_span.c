@@ -139,15 +139,21 @@ static void shade_one(const sc_scene *scene, sc_prec prec, const double eye[3],
         rgb[c] = (float)r.L[c];
 }
 
-void render_shade_span(const sc_scene *scene, sc_prec prec, const double eye[3], int n,
+void render_shader_init(render_shader *sh, const sc_scene *scene, sc_prec prec)
+{
+    sh->scene = scene;
+    sh->prec = prec;
+    sh->batch = prec == SC_HIGHP && render_batch_scene(scene, &sh->bs);
+}
+
+void render_shade_span(const render_shader *sh, const double eye[3], int n,
                        const render_shade_input *in, float *rgb)
 {
-    sc_batch_scene bs;
-    if (prec == SC_HIGHP && render_batch_scene(scene, &bs)) {
+    if (sh->batch) {
         for (int i = 0; i < n; i += CHUNK)
-            shade_chunk(&bs, eye, n - i < CHUNK ? n - i : CHUNK, in + i, rgb + 3 * i);
+            shade_chunk(&sh->bs, eye, n - i < CHUNK ? n - i : CHUNK, in + i, rgb + 3 * i);
         return;
     }
     for (int i = 0; i < n; i++)
-        shade_one(scene, prec, eye, &in[i], rgb + 3 * i);
+        shade_one(sh->scene, sh->prec, eye, &in[i], rgb + 3 * i);
 }

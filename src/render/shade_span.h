@@ -20,9 +20,20 @@ typedef struct {
  * equation (the per-light ambient terms c_amb ⊙ L_A,k join the global one); 0 otherwise. */
 int render_batch_scene(const sc_scene *s, sc_batch_scene *out);
 
+/* How a render shades: the scene and precision, and whether (and with what uniforms) the batch
+ * kernel does it — decided once per render, not per span. */
+typedef struct {
+    const sc_scene *scene;
+    sc_prec prec;
+    int batch; /* 1: through the kernel, with bs */
+    sc_batch_scene bs;
+} render_shader;
+
+void render_shader_init(render_shader *sh, const sc_scene *scene, sc_prec prec);
+
 /* rgb[3 i .. 3 i + 2] = L_o at in[i], seen from eye (v = normalize(eye − pos); v = n when the
  * point is the eye). */
-void render_shade_span(const sc_scene *scene, sc_prec prec, const double eye[3], int n,
+void render_shade_span(const render_shader *sh, const double eye[3], int n,
                        const render_shade_input *in, float *rgb);
 
 #endif
