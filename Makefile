@@ -49,11 +49,26 @@ $(BUILD)/obj/bench/peak_avx2.o: ISAFLAGS := -mavx2 -mfma
 endif
 
 # SLEEF (libsleef-dev) is optional: when found, `shadecalc bench` also times its AVX2 functions.
+# NO_SLEEF=1 builds as if it were absent (the tests must pass either way).
+ifneq ($(NO_SLEEF),1)
 SLEEF_LIBS := $(shell pkg-config --libs sleef 2>/dev/null)
+endif
 ifneq ($(SLEEF_LIBS),)
 $(BUILD)/obj/bench/sleef_avx2.o: CPPFLAGS += -DSC_HAVE_SLEEF
 BIN_LIBS := $(SLEEF_LIBS)
 endif
+
+# The detected configuration (compiler, flags, optional libraries) is kept in a stamp that every
+# object and link depends on: when it changes (libsleef-dev installed, CFLAGS=...), what depends
+# on it is rebuilt without a `make clean`.
+CONFIG_STAMP := $(BUILD)/config.stamp
+CONFIG_TEXT   = $(CC) [$(shell $(CC) --version 2>/dev/null | head -n 1)] $(CPPFLAGS) $(ALLCFLAGS) \
+                $(LDFLAGS) exr[$(EXR_LIBS)] sleef[$(SLEEF_LIBS)]
+ifneq ($(CONFIG_TEXT),$(file <$(CONFIG_STAMP)))
+$(shell mkdir -p $(BUILD))
+$(file >$(CONFIG_STAMP),$(CONFIG_TEXT))
+endif
+$(CONFIG_STAMP): ;
 
 LIB_SRCS   := $(sort $(shell find src -name '*.c' ! -path 'src/cli/*'))
 CLI_SRCS   := $(sort $(wildcard src/cli/*.c))
@@ -89,7 +104,7 @@ build-all: $(STATIC) $(SHARED) $(BIN) $(PROG_BINS)
 deps:
 	@sh mk/deps.sh
 
-$(BUILD)/obj/%.o: %.c
+$(BUILD)/obj/%.o: %.c $(CONFIG_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(ISAFLAGS) -MMD -MP -c $< -o $@
 
@@ -131,6 +146,11 @@ check: deps
 	@$(MAKE) --no-print-directory SAN=1 BUILD=$(BUILD)-san unit e2e
 	@$(MAKE) --no-print-directory fuzz
 	@echo "check: all test stages passed ($(CCNAME))"
+
+# A fresh clone of HEAD in an empty directory, checked with and without the optional SLEEF.
+.PHONY: check-fresh
+check-fresh:
+	@sh mk/fresh-clone.sh
 
 .PHONY: test-bins
 test-bins: $(UNIT_BINS) $(BIN)

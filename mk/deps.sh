@@ -1,18 +1,45 @@
 #!/bin/sh
 # Installs the Debian packages the build and the tests need, only those missing.
-# Called by `make deps` (and so by `make all` and `make check`). python3 is for the end-to-end
-# tests only: they parse the SVG and JSON output with a real parser.
+# Called by `make deps` (and so by `make all` and `make check`).
+#
+#   required   libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3
+#              (python3: the end-to-end tests parse the SVG and JSON output with a real parser)
+#   optional   libsleef-dev: `shadecalc bench` times SLEEF's AVX2 functions beside ours.
+#              Without it the build and every test still pass; bench only lacks those rows.
+#
+# As root, every missing package is installed. Otherwise a missing required package is an error
+# and a missing optional one a notice.
 set -eu
-need=""
-for pkg in libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3; do
-    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed' || need="$need $pkg"
-done
-[ -z "$need" ] && exit 0
+required="libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3"
+optional="libsleef-dev"
+
+missing() { # PACKAGES...: prints those not installed
+    for pkg in "$@"; do
+        dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed' ||
+            printf ' %s' "$pkg"
+    done
+}
+
+command -v dpkg-query >/dev/null 2>&1 || exit 0 # not Debian: the build finds what it finds
+need_req=$(missing $required)
+need_opt=$(missing $optional)
+[ -z "$need_req$need_opt" ] && exit 0
 if [ "$(id -u)" != 0 ]; then
-    echo "deps: missing Debian packages:$need (run 'make deps' as root, or install them)" >&2
-    exit 1
+    if [ -n "$need_req" ]; then
+        echo "deps: missing Debian packages:$need_req (run 'make deps' as root, or install them)" >&2
+        exit 1
+    fi
+    echo "deps: optional package$need_opt not installed: bench will lack its SLEEF rows" >&2
+    exit 0
 fi
-echo "deps: installing$need" >&2
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
-apt-get install -y -qq --no-install-recommends $need >/dev/null
+if [ -n "$need_req" ]; then
+    echo "deps: installing$need_req" >&2
+    apt-get install -y -qq --no-install-recommends $need_req >/dev/null
+fi
+if [ -n "$need_opt" ]; then
+    echo "deps: installing$need_opt (optional)" >&2
+    apt-get install -y -qq --no-install-recommends $need_opt >/dev/null ||
+        echo "deps: could not install optional$need_opt: bench will lack its SLEEF rows" >&2
+fi
