@@ -91,7 +91,7 @@ SHARED := $(BUILD)/libshadecalc.so.$(VERSION)
 SONAME := libshadecalc.so.$(SOVERSION)
 BIN    := $(BUILD)/shadecalc
 
-.PHONY: all deps check unit e2e san fuzz run bench accuracy install uninstall format clean
+.PHONY: all deps check coverage unit e2e san fuzz run bench accuracy install uninstall format clean
 .DEFAULT_GOAL := all
 .SECONDARY:
 
@@ -180,6 +180,19 @@ fuzz-bins: $(FUZZ_BINS)
 build-fuzz/fuzz/%: $(BUILD)/obj/tests/fuzz/%.o $(STATIC)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDALL) -fsanitize=fuzzer -o $@ $< $(STATIC) $(LDLIBS)
+
+# Line and branch coverage of the unit and end-to-end tests (gcovr, a test-only dependency):
+# an -O0 --coverage build in build-cov/, a table per file, and the targets of mk/coverage.py.
+COV_BUILD := build-cov
+COV_VARS  := BUILD=$(COV_BUILD) OPT="-O0 -g" CFLAGS="--coverage" LDFLAGS="--coverage"
+coverage: deps
+	@rm -rf $(COV_BUILD)/obj $(COV_BUILD)/coverage.json
+	@$(MAKE) --no-print-directory -j$(JOBS) $(COV_VARS) test-bins
+	@$(MAKE) --no-print-directory $(COV_VARS) unit e2e
+	@gcovr --root . --filter src/ --object-directory $(COV_BUILD)/obj \
+	    --exclude-unreachable-branches --exclude-throw-branches \
+	    --json-summary $(COV_BUILD)/coverage.json --html-details $(COV_BUILD)/coverage.html
+	@python3 mk/coverage.py $(COV_BUILD)/coverage.json
 
 # ---- the main job, benchmarks, accuracy table ---------------------------------
 run: all

@@ -6,12 +6,13 @@
 #              (python3: the end-to-end tests parse the SVG and JSON output with a real parser)
 #   optional   libsleef-dev: `shadecalc bench` times SLEEF's AVX2 functions beside ours.
 #              Without it the build and every test still pass; bench only lacks those rows.
+#              gcovr: only `make coverage` needs it.
 #
 # As root, every missing package is installed. Otherwise a missing required package is an error
 # and a missing optional one a notice.
 set -eu
 required="libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3"
-optional="libsleef-dev"
+optional="libsleef-dev gcovr"
 
 missing() { # PACKAGES...: prints those not installed
     for pkg in "$@"; do
@@ -29,7 +30,7 @@ if [ "$(id -u)" != 0 ]; then
         echo "deps: missing Debian packages:$need_req (run 'make deps' as root, or install them)" >&2
         exit 1
     fi
-    echo "deps: optional package$need_opt not installed: bench will lack its SLEEF rows" >&2
+    echo "deps: optional packages not installed:$need_opt (see mk/deps.sh for what each adds)" >&2
     exit 0
 fi
 export DEBIAN_FRONTEND=noninteractive
@@ -41,5 +42,5 @@ fi
 if [ -n "$need_opt" ]; then
     echo "deps: installing$need_opt (optional)" >&2
     apt-get install -y -qq --no-install-recommends $need_opt >/dev/null ||
-        echo "deps: could not install optional$need_opt: bench will lack its SLEEF rows" >&2
+        echo "deps: could not install optional$need_opt (see mk/deps.sh for what each adds)" >&2
 fi
