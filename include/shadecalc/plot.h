@@ -6,12 +6,22 @@
  *   sc_plot_ticks       "nice number" ticks of a linear axis (Heckbert, Graphics Gems, 1990)
  *   sc_plot_log_ticks   ticks of a log axis: powers of ten (with 2× and 5× when few decades)
  *   sc_plot_write_svg   the plot as one SVG document that any browser shows
+ *   sc_plot_write_heatmap_svg   a value over two variables as a heat map with a colour bar
  *
  * The SVG holds one <g class="series"> per curve (its label in data-label) with one <polyline>
  * per unbroken run of points: a NaN or infinite value, or a value a log axis cannot show
- * (<= 0), breaks the curve. The polar plot is BRDF Explorer's view of a lobe: x is the angle
- * from the normal in degrees (−90 left, 0 up, 90 right), y the distance from the centre
- * (negative values at the centre).
+ * (<= 0), breaks the curve. Each curve has its own colour, dash pattern and marker shape, so
+ * that curves that coincide stay distinguishable. The legend sits in a corner of the plot
+ * that no curve crosses, or else below the plot; the canvas grows to hold it and the title,
+ * so no text is clipped.
+ *
+ * The polar plot is BRDF Explorer's view of a lobe: x is the angle from the normal in degrees
+ * (−90 left, 0 up, 90 right), y the distance from the centre (negative values at the centre).
+ * Its radius range comes from the points off the horizon (|x| < 89.5°, where many models
+ * diverge), and a value of 0 exactly on the horizon is not drawn.
+ *
+ * sc_plot_write_heatmap_svg draws a value over a grid of two variables as coloured cells, with
+ * axes, a colour bar and a tone mapping: BRDF Explorer's θ_h × θ_d image slice as a figure.
  */
 #ifndef SHADECALC_PLOT_H
 #define SHADECALC_PLOT_H
@@ -23,6 +33,8 @@ typedef struct {
     const char *label; /* legend text; NULL for a curve without a legend entry */
     const double *x, *y;
     size_t n;
+    int has_incident;    /* polar: draw the incident direction of this curve */
+    double incident_deg; /* its angle from the normal, in degrees, as x */
 } sc_plot_series;
 
 typedef struct {
@@ -32,6 +44,9 @@ typedef struct {
     double ymin, ymax; /* y (or radius) range; NaN: from the data */
     const sc_plot_series *series;
     int n_series;
+    int has_reference; /* cartesian: a dashed horizontal line at y = reference_y */
+    double reference_y;
+    const char *reference_label; /* its label, or NULL */
 } sc_plot;
 
 /* Ticks at multiples of a nice step (1, 2 or 5 × 10^k) covering [lo, hi] with about `target`
@@ -44,5 +59,23 @@ int sc_plot_log_ticks(double lo, double hi, double *ticks, int max);
 
 /* Writes the document; 0, or -1 if writing failed. */
 int sc_plot_write_svg(FILE *out, const sc_plot *p);
+
+typedef enum { SC_TONE_LOG, SC_TONE_LINEAR } sc_tone;
+
+typedef struct {
+    const char *title, *xlabel, *ylabel; /* NULL: none */
+    const char *value_label;             /* the colour bar's label, or NULL */
+    const double *x, *y;                 /* the samples of the two variables, increasing */
+    size_t nx, ny;                       /* at least 2 each */
+    const double *values;                /* values[j·nx + i] at (x[i], y[j]); y grows upward */
+    sc_tone tone; /* log: six decades at most below the largest value; linear: from 0 */
+    double exposure; /* stops: the colour scale tops out at max / 2^exposure */
+    int sqrt_x;      /* x drawn at √((x − x0)/(x1 − x0)): BRDF Explorer's θ_h² mapping */
+} sc_heatmap;
+
+/* Writes the heat map: one cell per sample (edges halfway between samples), viridis colours,
+ * axes, and a colour bar labelled in the values' units. 0, or -1 if writing failed or a range
+ * is empty. */
+int sc_plot_write_heatmap_svg(FILE *out, const sc_heatmap *h);
 
 #endif

@@ -141,7 +141,9 @@ sc_sweep_status sc_sweep_run(const sc_sweep_job *job, char *err, size_t errsize)
 void sc_sweep_describe_var(const sc_sweep_var *v, char *buf, size_t size);
 
 /* Allocates img (shadecalc/image.h) for a grid of exactly two variables: width = the first's
- * count, height = the second's, row y = 0 (the top) the second variable's first value; channels
+ * count, height = the second's, the second variable growing upward (its first value on the
+ * bottom row, as a plot's y axis and BRDF Explorer's θ_h × θ_d slice with θ_d = 0 at the
+ * bottom); channels
  * Y for one result, R,G for two, R,G,B for three, R,G,B,A for four. 0, or -1 with err. */
 int sc_sweep_image_init(sc_image *img, const sc_sweep_grid *g, int n_results, char *err,
                         size_t errsize);

@@ -60,6 +60,12 @@ static void usage(FILE *out)
             "      --xlog, --ylog       log axes\n"
             "      --yrange LO:HI       the plot's y range (polar: the radius)\n"
             "      --image FILE.exr     an image of two variables (width, height): Y or R,G,B\n"
+            "      --heatmap FILE.svg   a heat map of two variables with a colour bar (rgb:\n"
+            "                           luminance)\n"
+            "      --tone T             the heat map's scale: log|linear (default log)\n"
+            "      --exposure STOPS     the heat map's exposure (default 0)\n"
+            "      --sqrt-x             the heat map's x at the square root of its position\n"
+            "                           (BRDF Explorer's theta_h^2 mapping)\n"
             "      --exr-type T         half|float (default float)\n"
             "  -h, --help               this help\n"
             "\n"
@@ -72,7 +78,7 @@ static void usage(FILE *out)
 enum {
     OPT_N = 256, OPT_V, OPT_P, OPT_EYE, OPT_TANGENT, OPT_VAR, OPT_LOG, OPT_PRESET, OPT_PLOT,
     OPT_POLAR, OPT_TITLE, OPT_XLABEL, OPT_YLABEL, OPT_XLOG, OPT_YLOG, OPT_YRANGE, OPT_IMAGE,
-    OPT_EXR_TYPE
+    OPT_EXR_TYPE, OPT_HEATMAP, OPT_TONE, OPT_EXPOSURE, OPT_SQRT_X
 };
 
 static int parse_yrange(const char *arg, sweep_picture_options *o)
@@ -152,6 +158,27 @@ static int option_value(sweep_options *o, int c, const char *arg)
     }
 }
 
+static int heatmap_option(sweep_picture_options *o, int c, const char *arg)
+{
+    switch (c) {
+    case OPT_HEATMAP: o->heatmap = arg; return SC_EXIT_OK;
+    case OPT_SQRT_X: o->sqrt_x = 1; return SC_EXIT_OK;
+    case OPT_TONE:
+        if (strcmp(arg, "log") == 0 || strcmp(arg, "linear") == 0) {
+            o->tone = arg[1] == 'o' ? SC_TONE_LOG : SC_TONE_LINEAR;
+            return SC_EXIT_OK;
+        }
+        sc_error("sweep: --tone %s: expected log or linear", arg);
+        return SC_EXIT_USAGE;
+    case OPT_EXPOSURE:
+        if (sc_parse_double(arg, &o->exposure) == 0 && fabs(o->exposure) <= 100.0)
+            return SC_EXIT_OK;
+        sc_error("sweep: --exposure %s: expected a number of stops from -100 to 100", arg);
+        return SC_EXIT_USAGE;
+    default: return -1;
+    }
+}
+
 static int picture_option(sweep_picture_options *o, int c, const char *arg)
 {
     switch (c) {
@@ -171,7 +198,7 @@ static int picture_option(sweep_picture_options *o, int c, const char *arg)
         }
         sc_error("sweep: --exr-type %s: expected half or float", arg);
         return SC_EXIT_USAGE;
-    default: return -1;
+    default: return heatmap_option(o, c, arg);
     }
 }
 
@@ -194,6 +221,10 @@ static int parse_options(int argc, char **argv, sweep_options *o)
         {"ylog", no_argument, NULL, OPT_YLOG},       {"yrange", required_argument, NULL, OPT_YRANGE},
         {"image", required_argument, NULL, OPT_IMAGE},
         {"exr-type", required_argument, NULL, OPT_EXR_TYPE},
+        {"heatmap", required_argument, NULL, OPT_HEATMAP},
+        {"tone", required_argument, NULL, OPT_TONE},
+        {"exposure", required_argument, NULL, OPT_EXPOSURE},
+        {"sqrt-x", no_argument, NULL, OPT_SQRT_X},
         {"help", no_argument, NULL, 'h'},            {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
@@ -359,7 +390,9 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
     sc_progress_start(&bar, "sweep", 1.0);
     job_context ctx = {plan, pictures, &bar};
     sc_sweep_job job = {g, plan->n_results, job_eval, &ctx,
-                        o->pictures.plot || o->pictures.image ? job_consume : NULL,
+                        o->pictures.plot || o->pictures.image || o->pictures.heatmap
+                            ? job_consume
+                            : NULL,
                         file ? &table : NULL, file ? sc_atomic_stream(file) : NULL,
                         isatty(STDERR_FILENO) ? job_progress : NULL, (int)o->threads};
     sc_sweep_status status = SC_SWEEP_OK;
@@ -424,7 +457,7 @@ static int sweep(sweep_options *o, int argc, char **argv)
         default_pictures(&o->pictures, &plan, &grid);
         status = sweep_pictures_open(&pictures, &o->pictures, &grid, &plan);
     }
-    int pictures_asked = o->pictures.plot || o->pictures.image;
+    int pictures_asked = o->pictures.plot || o->pictures.image || o->pictures.heatmap;
     const char *table_path = o->output ? o->output : pictures_asked ? NULL : "-";
     if (status == SC_EXIT_OK)
         status = execute(o, &grid, &plan, pictures, table_path);

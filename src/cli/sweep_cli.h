@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 
+#include "shadecalc/plot.h"
 #include "shadecalc/sweep.h"
 
 enum { SWEEP_MAX_RESULTS = 16, SWEEP_MAX_ITEMS = 128 };
@@ -24,6 +25,8 @@ typedef struct {
     const char *ylabel;
     int polar;         /* a preset's default view */
     double ymin, ymax; /* a preset's y range; NaN: from the data */
+    const char *reference_label; /* a preset's reference line y = reference_y, or NULL */
+    double reference_y;
 } sweep_plan;
 
 /* A shading option in command-line order: 'l' light, 'b' brdf, 'a' ambient, or a geometry
@@ -68,6 +71,10 @@ typedef struct {
     int xlog, ylog, polar;
     double ymin, ymax; /* NaN: from the data */
     const char *command; /* the command line, stored in the EXR header */
+    const char *heatmap; /* path or NULL */
+    sc_tone tone;        /* of the heat map */
+    double exposure;
+    int sqrt_x;
 } sweep_picture_options;
 
 typedef struct sweep_pictures sweep_pictures;

@@ -1,10 +1,11 @@
 /* shadecalc sweep --preset: the lecture's figures in one word.
  *
- *   attenuation   every distance attenuation function of SPEC §3 against r, one plot
- *   spot          the spotlight functions of SPEC §4 against θ_s
+ *   attenuation   every distance attenuation function (docs/formulas.md §3) against r
+ *   spot          the spotlight functions (docs/formulas.md §4) against θ_s
  *   lobe          a --brdf in the plane of incidence (θ_o from −90° to 90°) at θ_i = 0, 30, 60°,
  *                 BRDF Explorer's polar view
- *   albedo        the directional albedo a(θ_i) of several models (as `shadecalc check`)
+ *   albedo        the directional albedo a(θ_i) of several models (as `shadecalc check`), every
+ *                 degree up to 89°, with the line a = 1 of energy conservation
  *
  * attenuation, spot and albedo are tables: one column per curve, each curve a spec evaluated by
  * the library function the figure is about (sc_atten_eval, sc_spot_eval, sc_albedo).
@@ -18,7 +19,9 @@
 #include "shadecalc/check.h"
 #include "shadecalc/scene.h"
 
-enum { MAX_CURVES = 8 };
+/* The albedo preset's Gauss–Legendre order: a quarter of check's default work, and still far
+ * below a pixel's worth of error on the plot. */
+enum { MAX_CURVES = 8, ALBEDO_ORDER = 8 };
 static const double radians_per_degree = 0.017453292519943295;
 typedef enum { CURVE_ATTEN, CURVE_SPOT, CURVE_ALBEDO, LOBE } preset_kind;
 
@@ -33,6 +36,7 @@ typedef struct {
     preset_curve curves[MAX_CURVES];
     const char *title, *ylabel;
     double ymax; /* NaN: from the data */
+    const char *reference_label; /* a dashed line at y = 1, or NULL */
 } preset;
 
 /* clang-format off */
@@ -44,16 +48,16 @@ static const preset presets[] = {
         {"window", "point pos=0,0,0 atten=window rstart=2 rend=10", "window 2..10"},
         {"pixar", "point pos=0,0,0 atten=pixar fmax=2 fc=1 rc=1 se=2", "pixar fmax=2 fc=1 rc=1"},
         {"windowed", "point pos=0,0,0 atten=windowed rmax=10", "windowed rmax=10"}},
-     "Distance attenuation f_d(r) (SPEC 3)", "f_d(r)", 2.0},
+     "Distance attenuation f_d(r) (docs/formulas.md §3)", "f_d(r)", 2.0, NULL},
     {"spot", CURVE_SPOT, {"theta_s=0:60:241"}, {
         {"opengl", "spot pos=0,0,0 dir=0,0,-1 spot=opengl cutoff=45 exp=8", "opengl cutoff=45 exp=8"},
         {"directx", "spot pos=0,0,0 dir=0,0,-1 spot=directx inner=20 outer=45 exp=1", "directx 20..45 exp=1"},
         {"smoothstep", "spot pos=0,0,0 dir=0,0,-1 spot=smoothstep inner=20 outer=45", "smoothstep 20..45"}},
-     "Spotlight functions I_L/I_Lmax against theta_s (SPEC 4)", "I_L / I_Lmax", NAN},
+     "Spotlight functions I_L/I_Lmax against theta_s (docs/formulas.md §4)", "I_L / I_Lmax", NAN, NULL},
     {"lobe", LOBE, {"theta_o=-90:90:181", "theta_i=0,30,60"}, {
         {NULL, "blinn-phong diff=0 spec=1 m=32", NULL}},
-     NULL, NULL, NAN},
-    {"albedo", CURVE_ALBEDO, {"theta_i=0:85:18"}, {
+     NULL, NULL, NAN, NULL},
+    {"albedo", CURVE_ALBEDO, {"theta_i=0:89:90"}, {
         {"lambert", "lambert diff=1", "lambert"},
         {"phong_original", "phong form=original diff=0 spec=1 m=10", "phong original m=10"},
         {"phong_normalized", "phong form=normalized diff=0 spec=1 m=10", "phong normalized m=10"},
@@ -61,7 +65,8 @@ static const preset presets[] = {
         {"ward_1992", "ward diff=0 spec=1 alpha=0.2", "ward 1992 alpha=0.2"},
         {"ward_duer", "ward form=duer diff=0 spec=1 alpha=0.2", "ward duer alpha=0.2"},
         {"cook_torrance", "cook-torrance diff=0 f0=1 alpha=0.3 F=none", "ggx alpha=0.3, F=1"}},
-     "Directional albedo a(theta_i) (SPEC 6)", "albedo", NAN},
+     "Directional albedo a(theta_i) (docs/formulas.md §6.9)", "albedo", NAN,
+     "a = 1: energy conservation"},
 };
 /* clang-format on */
 enum { N_PRESETS = sizeof presets / sizeof presets[0] };
@@ -135,7 +140,7 @@ static int eval_curves(void *user, int worker, const double *vars, double *resul
             results[c] = sc_spot_eval(t->prec, &t->lights[c].spot, cos(vars[0] * radians_per_degree));
         } else {
             sc_albedo_result a;
-            sc_albedo(&t->brdfs[c], vars[0], 0, &a);
+            sc_albedo(&t->brdfs[c], vars[0], ALBEDO_ORDER, &a);
             results[c] = a.albedo[0];
         }
     }
@@ -235,5 +240,7 @@ int sweep_preset_plan(const char *name, sweep_setup_args *a, const sc_sweep_grid
     plan->ylabel = pr->ylabel;
     plan->ymin = isnan(pr->ymax) ? NAN : 0.0;
     plan->ymax = pr->ymax;
+    plan->reference_label = pr->reference_label;
+    plan->reference_y = 1.0;
     return status;
 }

@@ -51,7 +51,8 @@ int sc_sweep_image_init(sc_image *img, const sc_sweep_grid *g, int n_results, ch
 void sc_sweep_image_store(sc_image *img, uint64_t row, const double *results)
 {
     uint64_t w = (uint64_t)img->width;
-    float *px = sc_image_pixel(img, (int)(row % w), (int)(row / w));
+    int j = (int)(row / w); /* the second variable's first value on the bottom row */
+    float *px = sc_image_pixel(img, (int)(row % w), img->height - 1 - j);
     for (int c = 0; c < img->n_channels; c++)
         px[c] = (float)results[c];
 }

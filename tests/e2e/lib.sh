@@ -69,3 +69,10 @@ expect_close() {
         echo fail >>"$E2E_COUNTS"
     fi
 }
+
+# verdict NAME CONDITION...: a pass or a fail for a shell test
+verdict() {
+    name=$1; shift
+    if "$@"; then echo "ok   $name"; echo pass >>"$E2E_COUNTS"
+    else echo "FAIL $name: $*"; echo fail >>"$E2E_COUNTS"; fi
+}

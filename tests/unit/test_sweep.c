@@ -419,9 +419,9 @@ static void image_reads_back_with_values_and_ranges(void **state)
     assert_int_equal(sc_exr_read(path, &back, &attrs, &n_attrs, err, sizeof err), 0);
     assert_int_equal(back.width, 4);
     assert_int_equal(back.height, 3);
-    for (int y = 0; y < 3; y++) /* row y = 0 (the top) is the second variable's first value */
+    for (int y = 0; y < 3; y++) /* the bottom row (y = 2) is the second variable's first value */
         for (int x = 0; x < 4; x++)
-            assert_true(*sc_image_pixel(&back, x, y) == (float)(x * x + 3 * 10 * (y + 1)));
+            assert_true(*sc_image_pixel(&back, x, y) == (float)(x * x + 3 * 10 * (3 - y)));
     int found = 0;
     for (int i = 0; i < n_attrs; i++) {
         found += strcmp(attrs[i].name, "shadecalc:x_range") == 0 &&
