@@ -140,7 +140,7 @@ static int parse_options(int argc, char **argv, check_options *o)
     int c, status = SC_EXIT_OK;
     long order;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = getopt_long(argc, argv, "b:t:o:f:h", longs, NULL)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "b:t:o:f:h", longs)) != -1) {
         switch (c) {
         case 'b': status = add_brdf(o, optarg); break;
         case 't': status = parse_thetas(optarg, o); break;

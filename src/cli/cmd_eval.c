@@ -317,7 +317,7 @@ static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
     const char *defines[MAX_DEFINES + 1];
     int n_defines = 0, c;
     sc_getopt_reset();
-    while ((c = getopt_long(argc, argv, "+p:f:D:h", longs, NULL)) != -1) {
+    while ((c = sc_getopt(argc, argv, "+p:f:D:h", longs)) != -1) {
         switch (c) {
         case 'p':
             if (sc_prec_parse(optarg, &o->prec) < 0) {

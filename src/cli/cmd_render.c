@@ -283,7 +283,7 @@ static int parse_options(int argc, char **argv, shade_setup *s, render_options *
     int n = 0, c, status = todo ? SC_EXIT_OK : SC_EXIT_RUNTIME;
     sc_getopt_reset();
     while (status == SC_EXIT_OK &&
-           (c = getopt_long(argc, argv, "n:l:b:a:s:o:j:p:f:h", long_options, NULL)) != -1) {
+           (c = sc_getopt(argc, argv, "n:l:b:a:s:o:j:p:f:h", long_options)) != -1) {
         switch (c) {
         case 's': scene = optarg; break;
         case 'l':

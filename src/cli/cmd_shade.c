@@ -246,7 +246,7 @@ static int parse_options(int argc, char **argv, shade_setup *s, shade_options *o
     const char *scene = NULL;
     int n = 0, c, status = todo ? SC_EXIT_OK : SC_EXIT_RUNTIME;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = getopt_long(argc, argv, "l:b:a:s:p:f:eh", longs, NULL)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "l:b:a:s:p:f:eh", longs)) != -1) {
         switch (c) {
         case 's': scene = optarg; break;
         case 'p':

@@ -198,7 +198,7 @@ static int parse_options(int argc, char **argv, sweep_options *o)
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
     while (status == SC_EXIT_OK &&
-           (c = getopt_long(argc, argv, "+l:b:a:s:p:f:o:j:h", longs, NULL)) != -1) {
+           (c = sc_getopt(argc, argv, "+l:b:a:s:p:f:o:j:h", longs)) != -1) {
         if (c == 'h') {
             usage(stdout);
             return -1;

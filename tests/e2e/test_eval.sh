@@ -66,5 +66,5 @@ expect "bad define"               2 '' "error: eval: -D 'x': expected NAME=EXPR"
 expect "define error"             2 '' "error: -D 'y': column 8: operator '+': operands vec2 and vec3 do not match" -- eval -D 'y=vec2(1)+vec3(1)' '1'
 expect "bad precision"            2 '' "error: eval: unknown precision 'half' (double, highp, mediump, lowp)" -- eval -p half '1'
 expect "bad format"               2 '' "error: eval: unknown format 'xml' (glsl, csv, json)" -- eval -f xml '1'
-expect "unknown option"           2 '' "~option '--frob' is unknown" -- eval --frob '1'
+expect "unknown option"           2 '' "~unknown option '--frob'" -- eval --frob '1'
 expect "help"                     0 '~usage: shadecalc eval' '' -- eval --help

@@ -1,0 +1,42 @@
+# Command-line conventions shared by every subcommand (man page: CONVENTIONS): options anywhere,
+# '--', negative numbers as operands, '-' for standard input and output, did-you-mean.
+. tests/e2e/lib.sh
+t=$e2e_tmp
+
+# Options after operands. 1/3 in binary16 is 0x3555 = 0.33325195..., shortest decimal 0.3333.
+expect "eval: option after the operand"   0 '0.3333' '' -- eval '1.0/3.0' --precision mediump
+expect "eval: option between operands"    0 '1
+0.5' '' -- eval 1 -p lowp 0.5
+expect "sweep: -o after EXPR"             0 '' '' -- sweep --var x=0:1:3 'x*2.0' -o "$t/trailing.csv"
+expect "sweep: the table written"         0 'x,value
+0,0
+0.5,1
+1,2' '' -- sweep --var x=0:1:3 'x*2.0'
+expect "sweep: --var after EXPR"          0 '~0.5,1' '' -- sweep 'x*2.0' --var x=0:1:3
+expect "check: option after nothing"      0 '*' '' -- check -t 0 --brdf lambert
+expect "normal: options after --triangle" 0 'nx,ny,nz,area,degenerate
+0,0,1,0.5,0' '' -- normal --triangle 0,0,0 1,0,0 0,1,0 -f csv
+expect "normal: -f before the last points" 0 'nx,ny,nz,area,degenerate
+0,0,1,0.5,0' '' -- normal --triangle 0,0,0 -f csv 1,0,0 0,1,0
+expect "shade: options after --light"     0 '*' '' -- shade --light 'directional dir=0,0,1' -p double
+
+# '--' ends the options.
+expect "eval: -- then a negative number"  0 '-1' '' -- eval -- -1
+expect "eval: -- then an option's name"   2 '' "~unknown variable 'precision'" -- eval -- 1 --precision
+expect "sweep: -- keeps -o an operand"    2 '' "~unexpected argument '-o'" -- sweep --var x=0:1:2 x -- -o
+
+# Negative numbers and expressions are operands: '-' then a digit, '.' or '('.
+expect "eval -1.0"                        0 '-1' '' -- eval -1.0
+expect "eval -.5"                         0 '-0.5' '' -- eval -.5
+expect "eval '-(1.0)'"                    0 '-1' '' -- eval '-(1.0)'
+expect "eval -p highp -0.001"             0 '-0.001' '' -- eval -p highp '-0.001'
+expect "eval -2.0*3.0 after -p"           0 '-6' '' -- eval -p double '-2.0*3.0'
+expect "an option value may be negative"  0 '~-1,-1' '' -- sweep --var x=-1,1 x
+expect "normal: negative triangle points" 0 '~0,0,1,0.5' '' -- normal -f csv --triangle 0,0,0 -1,0,0 0,-1,0
+
+# Unknown options: the closest long option, or the hint at '--'.
+expect "did you mean --precision"         2 '' "error: eval: unknown option '--precison'; did you mean '--precision'? (see 'shadecalc eval --help')" -- eval --precison lowp 1
+expect "did you mean --output"            2 '' "~did you mean '--output'?" -- sweep --var x=0:1:2 x --ouput f.csv
+expect "an unknown short option hints --" 2 '' "~unknown option '-z'; an operand that starts with '-' goes after '--'" -- eval -z
+expect "a missing value"                  2 '' "error: eval: option '--precision' needs a value (see 'shadecalc eval --help')" -- eval 1 --precision
+expect "a missing short value"            2 '' "error: render: option '-o' needs a value (see 'shadecalc render --help')" -- render -o
