@@ -119,10 +119,13 @@ static int add_brdf(check_options *o, const char *spec)
         sc_error("check: too many --brdf (at most %d)", MAX_BRDFS);
         return SC_EXIT_USAGE;
     }
-    if (sc_model_parse(spec, &o->models[o->n], err, sizeof err) < 0) {
+    int parsed = sc_model_parse(spec, &o->models[o->n], err, sizeof err);
+    if (parsed < 0) {
         sc_error("%s", err);
         return SC_EXIT_USAGE;
     }
+    if (parsed > 0)
+        sc_warning("%s", err);
     if (o->models[o->n].kind != SC_MODEL_BRDF) {
         sc_error("check: '%s' is a legacy shading model, not a BRDF", spec);
         return SC_EXIT_USAGE;

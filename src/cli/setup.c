@@ -24,10 +24,13 @@ int setup_add_light(shade_setup *s, const char *spec, const char *where)
         sc_error("%stoo many lights (at most %d)", where, SETUP_MAX_LIGHTS);
         return SC_EXIT_USAGE;
     }
-    if (sc_light_parse(spec, &s->lights[s->n_lights], err, sizeof err) < 0) {
+    int parsed = sc_light_parse(spec, &s->lights[s->n_lights], err, sizeof err);
+    if (parsed < 0) {
         sc_error("%s%s", where, err);
         return SC_EXIT_USAGE;
     }
+    if (parsed > 0)
+        sc_warning("%s%s", where, err);
     s->n_lights++;
     return SC_EXIT_OK;
 }
@@ -35,10 +38,13 @@ int setup_add_light(shade_setup *s, const char *spec, const char *where)
 int setup_set_model(shade_setup *s, const char *spec, const char *where)
 {
     char err[256];
-    if (sc_model_parse(spec, &s->model, err, sizeof err) < 0) {
+    int parsed = sc_model_parse(spec, &s->model, err, sizeof err);
+    if (parsed < 0) {
         sc_error("%s%s", where, err);
         return SC_EXIT_USAGE;
     }
+    if (parsed > 0)
+        sc_warning("%s%s", where, err);
     s->have_model = 1;
     return SC_EXIT_OK;
 }

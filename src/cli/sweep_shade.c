@@ -123,7 +123,7 @@ static int update_specs(const shade_plan *s, worker_state *w, const double *vars
             continue;
         int bad = t->light >= 0 ? sc_light_parse(text, &w->lights[t->light], why, sizeof why)
                                 : sc_model_parse(text, &w->model, why, sizeof why);
-        if (bad) {
+        if (bad < 0) { /* an ignored key was reported when the setup was built */
             w->last[i][0] = '\0';
             snprintf(err, errsize, "'%s': %s", text, why);
             return -1;
