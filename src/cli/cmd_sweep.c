@@ -405,6 +405,22 @@ static void default_pictures(sweep_picture_options *pic, const sweep_plan *plan,
     pic->xlog |= g->n > 0 && g->var[0].spacing == SC_SPACING_LOG;
 }
 
+/* A variable nothing reads draws flat curves: say so. */
+static void warn_unused(const sc_sweep_grid *g, const sweep_plan *plan, const char *expr)
+{
+    for (int k = 0; k < g->n; k++) {
+        const char *name = g->var[k].name;
+        if (!(plan->unused >> k & 1u))
+            continue;
+        if (expr)
+            sc_warning("sweep: EXPR does not use variable '%s': its values all give the same "
+                       "results", name);
+        else
+            sc_warning("sweep: nothing reads variable '%s' (no spec has $%s and it is not an "
+                       "angle of l or v): its values all give the same results", name, name);
+    }
+}
+
 static int sweep(sweep_options *o, int argc, char **argv)
 {
     sc_sweep_grid grid = {.n = 0};
@@ -414,6 +430,8 @@ static int sweep(sweep_options *o, int argc, char **argv)
     int status = build_grid(o, &grid);
     if (status == SC_EXIT_OK)
         status = make_plan(o, &grid, &plan);
+    if (status == SC_EXIT_OK)
+        warn_unused(&grid, &plan, o->expr);
     if (status == SC_EXIT_OK && o->pictures.polar && (o->pictures.xlog || o->pictures.ylog)) {
         sc_error("sweep: --polar has no log axes");
         status = SC_EXIT_USAGE;

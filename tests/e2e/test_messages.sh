@@ -36,3 +36,9 @@ expect "escaped: a spec kind"             2 '' "~unknown kind 'poin\\x1bt'" -- s
 bad=$(printf 'm=\377\001')
 expect "escaped: a spec value"            2 '' "~m=\\xff\\x01: expected a number" -- shade -l "$sun" -b "phong $bad"
 expect "escaped: valid UTF-8 kept"        2 '' "~unknown key 'θ'" -- shade -l "$sun" -b 'phong θ=1'
+
+# A sweep variable nothing reads draws flat curves: a warning.
+expect "sweep: a variable the light ignores" 0 '*' "warning: sweep: nothing reads variable 'theta_s' (no spec has \$theta_s and it is not an angle of l or v): its values all give the same results" -- sweep --var theta_s=0:10:3 -l 'spot pos=0,0,1 dir=0,0,-1'
+expect "sweep: a variable EXPR ignores"   0 '*' "warning: sweep: EXPR does not use variable 'y': its values all give the same results" -- sweep --var x=0:1:3 --var y=1,2 'x*2.0'
+expect "sweep: a swizzle is not a use"    0 '*' "~does not use variable 'x'" -- sweep --var x=0:1:3 --var y=1,2 'vec2(y).x'
+expect "sweep: \${m} is a use"            0 '*' '' -- sweep --var m=8,32 --var theta_o=0:90:3 -b 'phong m=${m}'

@@ -29,7 +29,7 @@ expect "log spacing" 0 'm,value
 10,10
 100,100
 1000,1000' '' -- sweep --var m=1:1000:4 --log 'm'
-expect "log of one variable" 0 '~10,0.5' '' -- sweep --var m=1:100:3 --var t=0,0.5 --log=m 't'
+expect "log of one variable" 0 '~10,0.5' '' -- sweep --var m=1:100:3 --var t=0,0.5 --log=m 'm*t'
 sweep -f jsonl --var x=0:1:5 'vec2(x, 1.0 / x)' >"$e2e_tmp/rows.jsonl"
 verdict "jsonl is JSON" python3 -c '
 import json, sys
