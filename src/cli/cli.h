@@ -45,6 +45,13 @@ void sc_getopt_reset(void);
  * option or a missing value (then call sc_usage_error). */
 int sc_getopt(int argc, char **argv, const char *optstring, const struct option *longs);
 
+/* Whether `path` may name an output written as `format` ("svg", "exr", or "table"): a name
+ * whose extension is another image format (.png, .jpg, .pdf, .svg, .exr, ...) would hold what
+ * its name does not say, so it is refused with a message naming cmd and option (USAGE);
+ * any other name, and "-", is OK. */
+int sc_check_output_name(const char *cmd, const char *option, const char *path,
+                         const char *format);
+
 /* Strict number parsing: the whole string must be a number. Returns 0 on success, -1 if not. */
 int sc_parse_double(const char *s, double *out);
 int sc_parse_long(const char *s, long *out);

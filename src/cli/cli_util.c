@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "util/text.h"
 
@@ -176,6 +177,29 @@ int sc_usage_error(const char *cmd, char **argv, int optopt)
                          : "; an operand that starts with '-' goes after '--'",
                  cmd);
     return SC_EXIT_USAGE;
+}
+
+int sc_check_output_name(const char *cmd, const char *option, const char *path,
+                         const char *format)
+{
+    static const char *const images[] = {"png", "jpg", "jpeg", "gif", "bmp", "tif", "tiff",
+                                         "webp", "pdf", "ppm", "hdr", "svg", "exr", "eps"};
+    const char *dot = strrchr(path, '.');
+    if (!dot || strchr(dot, '/'))
+        return SC_EXIT_OK;
+    for (size_t i = 0; i < sizeof images / sizeof images[0]; i++) {
+        if (strcasecmp(dot + 1, images[i]) != 0 || strcasecmp(images[i], format) == 0)
+            continue;
+        char shown[256];
+        if (strcmp(format, "table") == 0)
+            sc_error("%s: %s %s: writes a table, not %s", cmd, option,
+                     sc_escape(path, shown, sizeof shown), images[i]);
+        else
+            sc_error("%s: %s %s: writes %s, not %s: name it .%s (and convert it if need be)", cmd,
+                     option, sc_escape(path, shown, sizeof shown), format, images[i], format);
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
 }
 
 int sc_parse_double(const char *s, double *out)

@@ -142,7 +142,7 @@ static int option_value(sweep_options *o, int c, const char *arg)
             return SC_EXIT_OK;
         sc_error("sweep: unknown format '%s' (csv, tsv, jsonl)", arg);
         return SC_EXIT_USAGE;
-    case 'o': o->output = arg; return SC_EXIT_OK;
+    case 'o': o->output = arg; return sc_check_output_name("sweep", "-o", arg, "table");
     case 'j':
         if (sc_parse_long(arg, &o->threads) == 0 && o->threads >= 1 && o->threads <= MAX_THREADS)
             return SC_EXIT_OK;
@@ -155,7 +155,7 @@ static int option_value(sweep_options *o, int c, const char *arg)
 static int picture_option(sweep_picture_options *o, int c, const char *arg)
 {
     switch (c) {
-    case OPT_PLOT: o->plot = arg; return SC_EXIT_OK;
+    case OPT_PLOT: o->plot = arg; return sc_check_output_name("sweep", "--plot", arg, "svg");
     case OPT_POLAR: o->polar = 1; return SC_EXIT_OK;
     case OPT_TITLE: o->title = arg; return SC_EXIT_OK;
     case OPT_XLABEL: o->xlabel = arg; return SC_EXIT_OK;
@@ -163,7 +163,7 @@ static int picture_option(sweep_picture_options *o, int c, const char *arg)
     case OPT_XLOG: o->xlog = 1; return SC_EXIT_OK;
     case OPT_YLOG: o->ylog = 1; return SC_EXIT_OK;
     case OPT_YRANGE: return parse_yrange(arg, o);
-    case OPT_IMAGE: o->image = arg; return SC_EXIT_OK;
+    case OPT_IMAGE: o->image = arg; return sc_check_output_name("sweep", "--image", arg, "exr");
     case OPT_EXR_TYPE:
         if (strcmp(arg, "half") == 0 || strcmp(arg, "float") == 0) {
             o->exr_half = arg[0] == 'h';

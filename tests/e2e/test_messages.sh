@@ -2,6 +2,11 @@
 # kinds and keys, scene files and OBJ files, user input escaped in messages.
 . tests/e2e/lib.sh
 t=$e2e_tmp
+
+expect_file() { # NAME PATH: the file exists and is not empty
+    if [ -s "$2" ]; then echo "ok   $1"; echo pass >>"$E2E_COUNTS"
+    else echo "FAIL $1: no file $2"; echo fail >>"$E2E_COUNTS"; fi
+}
 sun="directional dir=0,0,1"
 
 # A key given twice, two keys for one parameter, a negative light colour: errors naming the key.
@@ -42,3 +47,44 @@ expect "sweep: a variable the light ignores" 0 '*' "warning: sweep: nothing read
 expect "sweep: a variable EXPR ignores"   0 '*' "warning: sweep: EXPR does not use variable 'y': its values all give the same results" -- sweep --var x=0:1:3 --var y=1,2 'x*2.0'
 expect "sweep: a swizzle is not a use"    0 '*' "~does not use variable 'x'" -- sweep --var x=0:1:3 --var y=1,2 'vec2(y).x'
 expect "sweep: \${m} is a use"            0 '*' '' -- sweep --var m=8,32 --var theta_o=0:90:3 -b 'phong m=${m}'
+
+# Scene files: '#' starts a comment anywhere; errors name FILE:LINE; '-' is standard input.
+printf 'light point pos=0,0,1 # the key light\nbrdf lambert # diff 0.8\n' >"$t/comment.scene"
+expect "scene: a comment after an item"   0 '0.25464790894703254 0.25464790894703254 0.25464790894703254' '' -- shade -p double -s "$t/comment.scene"
+printf '# geometry\nlight point pos=0,0,1\nn 0,0,0\n' >"$t/zero.scene"
+expect "scene: a zero normal names FILE:LINE" 2 '' "error: $t/zero.scene:3: n 0,0,0: must not be the zero vector" -- shade -s "$t/zero.scene"
+expect "option: a zero normal"            2 '' 'error: --n 0,0,0: must not be the zero vector' -- shade -l "$sun" --n 0,0,0
+printf 'light point pos=0,0,1\nnn 0,0,1\n' >"$t/typo.scene"
+expect "scene: did you mean an item"      2 '' "error: $t/typo.scene:2: unknown item 'nn' (did you mean 'n'?)" -- shade -s "$t/typo.scene"
+printf 'light point pos=0,0,1\nn 0,0,1\0 junk\n' >"$t/nul.scene"
+expect "scene: a NUL byte is an error"    2 '' "error: $t/nul.scene:2: a NUL byte in the line" -- shade -s "$t/nul.scene"
+expect_stdin "scene: '-' is standard input" 'light point pos=0,0,1
+' 0 '0.25464790894703254 0.25464790894703254 0.25464790894703254' '' -- shade -p double -s -
+expect_stdin "scene: stdin errors name it" 'light point pos=0,0,1
+n 0,0,0
+' 2 '' 'error: standard input:2: n 0,0,0: must not be the zero vector' -- shade -s -
+expect "scene: a missing file, exit 1"    1 '' "error: $t/none.scene: No such file or directory" -- shade -s "$t/none.scene"
+
+# OBJ files: a missing file says why (exit 1); malformed content is exit 2 as for a scene file.
+expect "obj: cannot open says why"        1 '' "error: $t/none.obj: cannot open: No such file or directory" -- render --mesh "$t/none.obj" -o "$t/o.exr"
+printf 'v 0 0 0\nv 1 0 0\nf 1 2 3\n' >"$t/bad.obj"
+expect "obj: malformed content is exit 2" 2 '' "error: $t/bad.obj:3: bad vertex index in '3'" -- render --mesh "$t/bad.obj" -o "$t/o.exr"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\0 4\n' >"$t/nul.obj"
+expect "obj: a NUL byte is an error"      2 '' "~$t/nul.obj:4: a NUL byte in" -- render --mesh "$t/nul.obj" -o "$t/o.exr"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nfo\033o 1 2 3\n' >"$t/esc.obj"
+expect "obj: a statement is escaped"      2 '' "error: $t/esc.obj:4: unknown statement 'fo\\x1bo'" -- render --mesh "$t/esc.obj" -o "$t/o.exr"
+expect_stdin "obj: '-' is standard input" 'v 0 0 0
+v 1 0 0
+v 0 1 0
+f 1 2 3
+' 0 '' '' -- render --mesh - --size 8x8 -o "$t/stdin.exr"
+expect_file "obj: the image from stdin"   "$t/stdin.exr"
+
+# Output names that say another format: refused before any work; --output-dir is created.
+expect "render -o t.png is refused"       2 '' 'error: render: -o t.png: writes exr, not png: name it .exr (and convert it if need be)' -- render -o t.png
+expect "sweep --plot p.png is refused"    2 '' '~--plot p.png: writes svg, not png' -- sweep --var x=0:1:2 x --plot p.png
+expect "sweep --image i.png is refused"   2 '' '~--image i.png: writes exr, not png' -- sweep --var x=0:1:2 --var y=0:1:2 x --image i.png
+expect "sweep -o t.svg is refused"        2 '' 'error: sweep: -o t.svg: writes a table, not svg' -- sweep --var x=0:1:2 x -o t.svg
+expect "sweep --plot to '-' is fine"      0 '~<svg' '' -- sweep --var x=0:1:2 x --plot -
+expect "render --compare creates --output-dir" 0 '~gouraud' '' -- render --compare --size 16x16 --output-dir "$t/cmp/new"
+expect_file "the compare images are there" "$t/cmp/new/render-exact.exr"
