@@ -49,7 +49,8 @@ static void usage(FILE *out)
             "      --n, --v, --p, --eye, --tangent X,Y,Z   the geometry, as for shade\n"
             "      --preset NAME        attenuation|spot|lobe|albedo: the lecture's figures\n"
             "  -p, --precision P        double|highp|mediump|lowp (default highp)\n"
-            "  -f, --format F           csv|tsv|jsonl (default csv)\n"
+            "  -f, --format F           csv|tsv|jsonl (default csv; jsonl: JSON Lines, one\n"
+            "                           object per row, also called json)\n"
             "  -o, --output FILE        the table (default standard output; with --plot or\n"
             "                           --image, the table is written only when this is given)\n"
             "  -j, --threads N          worker threads (default: the number of processors)\n"
@@ -137,8 +138,8 @@ static int option_value(sweep_options *o, int c, const char *arg)
             return SC_EXIT_OK;
         sc_error("sweep: unknown precision '%s' (double, highp, mediump, lowp)", arg);
         return SC_EXIT_USAGE;
-    case 'f':
-        if (sc_sweep_format_parse(arg, &o->format) == 0)
+    case 'f': /* "json" names JSON Lines too, as for eval */
+        if (sc_sweep_format_parse(strcmp(arg, "json") ? arg : "jsonl", &o->format) == 0)
             return SC_EXIT_OK;
         sc_error("sweep: unknown format '%s' (csv, tsv, jsonl)", arg);
         return SC_EXIT_USAGE;
@@ -299,19 +300,20 @@ static void show_progress(sc_progress *bar, uint64_t done, uint64_t total)
 
 /* ---- running ---- */
 
-/* The table's columns: the variables, then the plan's results; a result named like a variable
- * (--var r=... and the r,g,b of a colour) becomes result_NAME. */
+/* The table's columns: the variables, then the plan's results; when a result is named like a
+ * variable (--var r=... and the r,g,b of a colour), every result becomes result_NAME, so that
+ * the results keep one naming. */
 static void table_names(const sc_sweep_grid *g, const sweep_plan *plan, const char **names,
                         char (*renamed)[SC_SWEEP_NAME_MAX + 8])
 {
+    int clash = 0;
     for (int k = 0; k < g->n; k++)
         names[k] = g->var[k].name;
+    for (int c = 0; c < plan->n_results; c++)
+        clash |= sc_sweep_grid_find(g, plan->columns[c]) >= 0;
     for (int c = 0; c < plan->n_results; c++) {
-        names[g->n + c] = plan->columns[c];
-        if (sc_sweep_grid_find(g, plan->columns[c]) >= 0) {
-            snprintf(renamed[c], sizeof renamed[c], "result_%s", plan->columns[c]);
-            names[g->n + c] = renamed[c];
-        }
+        snprintf(renamed[c], sizeof renamed[c], "result_%s", plan->columns[c]);
+        names[g->n + c] = clash ? renamed[c] : plan->columns[c];
     }
 }
 

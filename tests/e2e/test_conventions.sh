@@ -40,3 +40,21 @@ expect "did you mean --output"            2 '' "~did you mean '--output'?" -- sw
 expect "an unknown short option hints --" 2 '' "~unknown option '-z'; an operand that starts with '-' goes after '--'" -- eval -z
 expect "a missing value"                  2 '' "error: eval: option '--precision' needs a value (see 'shadecalc eval --help')" -- eval 1 --precision
 expect "a missing short value"            2 '' "error: render: option '-o' needs a value (see 'shadecalc render --help')" -- render -o
+
+# Output formats: one name for JSON Lines, an expression column in eval's CSV, one rule for
+# result columns named like variables, the same keys in shade's JSON as in its text.
+expect "eval -f jsonl"                    0 '{"expression": "1.5", "precision": "highp", "type": "float", "value": 1.5}' '' -- eval -f jsonl 1.5
+expect "sweep -f json is JSON Lines"      0 '{"x": 2, "value": 4}' '' -- sweep -f json --var x=2 'x*x'
+expect "eval csv: an expression column"   0 'expression,value
+1.0/4.0,0.25
+"max(1.0, 2.0)",2' '' -- eval -f csv '1.0/4.0' 'max(1.0, 2.0)'
+expect "eval csv: a newline is quoted"    0 'expression,value
+"1.0 +
+1.0",2' '' -- eval -f csv "$(printf '1.0 +\n1.0')"
+expect "sweep: every result renamed"      0 '~r,result_r,result_g,result_b' '' -- sweep --var r=1 --light 'point pos=0,0,$r'
+expect "sweep: no clash, no rename"       0 '~q,r,g,b' '' -- sweep --var q=1 --light 'point pos=0,0,$q'
+# cos θ_o of v = (0,1,1)/√2 about n = (0,1,0) is √½, 0.70710677 in binary32.
+expect "shade json explain: cos_theta_o"  0 '~"cos_theta_i": 1, "cos_theta_o": 0.70710677, "cos_theta_h": 0.9238795' '' -- shade -f json --explain -l 'spot pos=0,4,0 dir=0,-1,0 spot=directx inner=20 outer=30' -b ward --n 0,1,0 --v 0,1,1
+expect "shade json explain: cos_theta_s"  0 '~"spot": 1, "cos_theta_s": 1' '' -- shade -f json --explain -l 'spot pos=0,4,0 dir=0,-1,0 spot=directx inner=20 outer=30' -b ward --n 0,1,0 --v 0,1,1
+expect "shade json explain: ward exp_term" 0 '~"exp_term": ' '' -- shade -f json --explain -l 'spot pos=0,4,0 dir=0,-1,0 spot=directx inner=20 outer=30' -b ward --n 0,1,0 --v 0,1,1
+expect "shade json explain: primary"      0 '~"primary": [' '' -- shade -f json --explain -l "directional dir=0,0,1" -b 'opengl separate-specular=1'
