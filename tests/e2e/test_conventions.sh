@@ -58,3 +58,18 @@ expect "shade json explain: cos_theta_o"  0 '~"cos_theta_i": 1, "cos_theta_o": 0
 expect "shade json explain: cos_theta_s"  0 '~"spot": 1, "cos_theta_s": 1' '' -- shade -f json --explain -l 'spot pos=0,4,0 dir=0,-1,0 spot=directx inner=20 outer=30' -b ward --n 0,1,0 --v 0,1,1
 expect "shade json explain: ward exp_term" 0 '~"exp_term": ' '' -- shade -f json --explain -l 'spot pos=0,4,0 dir=0,-1,0 spot=directx inner=20 outer=30' -b ward --n 0,1,0 --v 0,1,1
 expect "shade json explain: primary"      0 '~"primary": [' '' -- shade -f json --explain -l "directional dir=0,0,1" -b 'opengl separate-specular=1'
+
+# Progress bars (standard error on a terminal, from script(1)): at most ~10 redraws a second,
+# with an ETA. 9 million cheap rows on one thread run for a few seconds.
+if command -v script >/dev/null 2>&1; then
+    start=$(date +%s.%N)
+    script -qec "'$SHADECALC' sweep -j 1 --var x=0:1:3000 --var y=0:1:3000 --image '$t/progress.exr' 'x+y'" /dev/null >"$t/tty.out" 2>&1
+    end=$(date +%s.%N)
+    redraws=$(tr '\r' '\n' <"$t/tty.out" | grep -c '^sweep \[')
+    if awk -v n="$redraws" -v s="$start" -v e="$end" 'BEGIN { exit !(n <= 10 * (e - s) + 3) }' &&
+        grep -q 'ETA [0-9]' "$t/tty.out"; then
+        echo "ok   progress: $redraws redraws, with an ETA"; echo pass >>"$E2E_COUNTS"
+    else
+        echo "FAIL progress: $redraws redraws in $start..$end, or no ETA"; echo fail >>"$E2E_COUNTS"
+    fi
+fi
