@@ -11,11 +11,14 @@
 
 #include "util/text.h"
 
+/* Every message goes through here, so user input it quotes (a file name, a spec, an
+ * expression) reaches the terminal with its control characters and bad UTF-8 escaped. */
 static void vreport(const char *kind, const char *fmt, va_list ap)
 {
-    fprintf(stderr, "%s: ", kind);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
+    enum { MESSAGE_MAX = 2048 };
+    char message[MESSAGE_MAX], shown[4 * MESSAGE_MAX];
+    vsnprintf(message, sizeof message, fmt, ap);
+    fprintf(stderr, "%s: %s\n", kind, sc_escape(message, shown, sizeof shown));
 }
 
 void sc_error(const char *fmt, ...)
@@ -168,7 +171,7 @@ int sc_usage_error(const char *cmd, char **argv, int optopt)
     if (!is_long)
         snprintf(shown, sizeof shown, "-%c", optopt);
     else
-        sc_escape_n(arg, strcspn(arg, "="), shown, sizeof shown);
+        snprintf(shown, sizeof shown, "%.*s", (int)strcspn(arg, "="), arg);
     if (parse.missing_value)
         sc_error("%s: option '%s' needs a value (see 'shadecalc %s --help')", cmd, shown, cmd);
     else
@@ -190,13 +193,11 @@ int sc_check_output_name(const char *cmd, const char *option, const char *path,
     for (size_t i = 0; i < sizeof images / sizeof images[0]; i++) {
         if (strcasecmp(dot + 1, images[i]) != 0 || strcasecmp(images[i], format) == 0)
             continue;
-        char shown[256];
         if (strcmp(format, "table") == 0)
-            sc_error("%s: %s %s: writes a table, not %s", cmd, option,
-                     sc_escape(path, shown, sizeof shown), images[i]);
+            sc_error("%s: %s %s: writes a table, not %s", cmd, option, path, images[i]);
         else
             sc_error("%s: %s %s: writes %s, not %s: name it .%s (and convert it if need be)", cmd,
-                     option, sc_escape(path, shown, sizeof shown), format, images[i], format);
+                     option, path, format, images[i], format);
         return SC_EXIT_USAGE;
     }
     return SC_EXIT_OK;

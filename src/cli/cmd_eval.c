@@ -5,7 +5,6 @@
 
 #include "cli/cli.h"
 #include "shadecalc/expr.h"
-#include "util/text.h"
 
 enum { FMT_GLSL, FMT_CSV, FMT_JSON };
 enum { MAX_DEFINES = 32, MAX_HITS = 8 };
@@ -337,8 +336,7 @@ static int parse_format(const char *arg, int *format)
             *format = formats[i];
             return SC_EXIT_OK;
         }
-    char shown[96];
-    sc_error("eval: unknown format '%s' (glsl, csv, jsonl)", sc_escape(arg, shown, sizeof shown));
+    sc_error("eval: unknown format '%s' (glsl, csv, jsonl)", arg);
     return SC_EXIT_USAGE;
 }
 

@@ -22,14 +22,13 @@ static void print_help(FILE *out)
 
 static void unknown_command(const char *name)
 {
-    char shown[96];
     sc_suggestion s;
     sc_suggest_init(&s, name);
     for (int i = 0; i < command_count; i++)
         sc_suggest_consider(&s, commands[i]->name);
     const char *best = sc_suggest_best(&s);
     sc_error("unknown command '%s'%s%s%s (see 'shadecalc --help')",
-             sc_escape(name, shown, sizeof shown), best ? "; did you mean '" : "", best ? best : "",
+             name, best ? "; did you mean '" : "", best ? best : "",
              best ? "'?" : "");
 }
 

@@ -62,23 +62,20 @@ int setup_set_value(shade_setup *s, const char *name, const char *value, const c
         if (strcmp(name, names[i]) != 0)
             continue;
         int bad = i == 0 ? sc_parse_colour(value, fields[i]) : sc_parse_vector3(value, fields[i]);
-        char shown[96];
         const char *dashes = where[0] ? "" : "--"; /* a scene file's items have none */
-        sc_escape(value, shown, sizeof shown);
         if (bad) {
-            sc_error("%s%s%s %s: expected %s", where, dashes, name, shown,
+            sc_error("%s%s%s %s: expected %s", where, dashes, name, value,
                      i == 0 ? "a colour R,G,B (or one number)" : "three numbers X,Y,Z");
             return SC_EXIT_USAGE;
         }
         if (must_not_be_zero[i] && is_zero(fields[i])) {
-            sc_error("%s%s%s %s: must not be the zero vector", where, dashes, name, shown);
+            sc_error("%s%s%s %s: must not be the zero vector", where, dashes, name, value);
             return SC_EXIT_USAGE;
         }
         if (flags[i])
             *flags[i] = 1;
         return SC_EXIT_OK;
     }
-    char shown[96];
     sc_suggestion hint;
     sc_suggest_init(&hint, name);
     for (int i = 0; i < 6; i++)
@@ -86,7 +83,7 @@ int setup_set_value(shade_setup *s, const char *name, const char *value, const c
     sc_suggest_consider(&hint, "light");
     sc_suggest_consider(&hint, "brdf");
     const char *best = sc_suggest_best(&hint);
-    sc_error("%sunknown item '%s'%s%s%s", where, sc_escape(name, shown, sizeof shown),
+    sc_error("%sunknown item '%s'%s%s%s", where, name,
              best ? " (did you mean '" : "", best ? best : "", best ? "'?)" : "");
     return SC_EXIT_USAGE;
 }

@@ -74,37 +74,43 @@ static size_t utf8_length(const unsigned char *s, size_t len)
     return n;
 }
 
+/* The printable form of the character at s[i] (of len bytes) into piece; sets *used to the
+ * bytes it takes and returns the piece's length. */
+static size_t piece_at(const unsigned char *s, size_t len, size_t i, char piece[8], size_t *used)
+{
+    size_t n = s[i] < 0x80 ? (s[i] >= 0x20 && s[i] != 0x7f) : utf8_length(s + i, len - i);
+    if (n == 0) {
+        *used = 1;
+        return (size_t)snprintf(piece, 8, "\\x%02x", s[i]);
+    }
+    memcpy(piece, s + i, n);
+    *used = n;
+    return n;
+}
+
 const char *sc_escape_n(const char *s, size_t len, char *buf, size_t size)
 {
     const unsigned char *u = (const unsigned char *)s;
-    size_t out = 0, i = 0;
+    char piece[8];
+    size_t total = 0, out = 0, used;
     if (size == 0)
         return buf;
-    while (i < len) {
-        char piece[8];
-        size_t n = u[i] < 0x80 ? (u[i] >= 0x20 && u[i] != 0x7f) : utf8_length(u + i, len - i);
-        size_t piece_len;
-        if (n == 0) {
-            piece_len = (size_t)snprintf(piece, sizeof piece, "\\x%02x", u[i]);
-            n = 1;
-        } else if (u[i] == '\\') {
-            piece_len = (size_t)snprintf(piece, sizeof piece, "\\\\");
-        } else {
-            memcpy(piece, s + i, n);
-            piece_len = n;
-        }
-        if (out + piece_len + 4 > size) { /* room for "..." and the terminator */
-            if (out + 4 <= size) {
-                memcpy(buf + out, "...", 3);
-                out += 3;
-            }
+    for (size_t i = 0; i < len; i += used)
+        total += piece_at(u, len, i, piece, &used);
+    /* When it does not all fit, keep room for "..." after the last whole piece. */
+    size_t room = total < size ? size - 1 : size < 4 ? 0 : size - 4;
+    for (size_t i = 0; i < len; i += used) {
+        size_t n = piece_at(u, len, i, piece, &used);
+        if (out + n > room)
             break;
-        }
-        memcpy(buf + out, piece, piece_len);
-        out += piece_len;
-        i += n;
+        memcpy(buf + out, piece, n);
+        out += n;
     }
-    buf[out < size ? out : size - 1] = '\0';
+    if (total >= size && size >= 4) {
+        memcpy(buf + out, "...", 3);
+        out += 3;
+    }
+    buf[out] = '\0';
     return buf;
 }
 

@@ -26,7 +26,7 @@ const char *sc_suggest_best(const sc_suggestion *s);
 size_t sc_edit_distance(const char *a, const char *b);
 
 /* s as printable text into buf: control characters, DEL and bytes that are not valid UTF-8
- * become \xNN, a backslash \\; cut with "..." to fit. Returns buf. */
+ * become \xNN (so escaping twice changes nothing); cut with "..." to fit. Returns buf. */
 const char *sc_escape(const char *s, char *buf, size_t size);
 /* The same for the first len bytes of s (which may hold NUL bytes). */
 const char *sc_escape_n(const char *s, size_t len, char *buf, size_t size);
