@@ -73,3 +73,19 @@ if command -v script >/dev/null 2>&1; then
         echo "FAIL progress: $redraws redraws in $start..$end, or no ETA"; echo fail >>"$E2E_COUNTS"
     fi
 fi
+
+# '-' is standard input or output wherever a file is named.
+scene='light directional dir=0,0,1
+brdf lambert'
+expect_stdin "sweep -s -"                 "$scene" 0 'theta_i,r,g,b
+0,0.25464790894703254,0.25464790894703254,0.25464790894703254' '' -- sweep -p double -s - --var theta_i=0
+expect_stdin "render -s - -o -"           "$scene" 0 '*' '' -- render -s - --size 4x4 -o -
+expect "sweep -o -"                       0 'x,value
+1,1' '' -- sweep -o - --var x=1 x
+# An EXR on standard output starts with the magic number 76 2f 31 01.
+magic=$("$SHADECALC" render --size 4x4 -o - | od -An -tx1 -N4 | tr -d ' ')
+[ "$magic" = 762f3101 ] && { echo "ok   render -o - writes the EXR"; echo pass >>"$E2E_COUNTS"; } ||
+    { echo "FAIL render -o - writes the EXR: magic $magic"; echo fail >>"$E2E_COUNTS"; }
+magic=$("$SHADECALC" sweep --var x=0,1 --var y=0,1 'x+y' --image - | od -An -tx1 -N4 | tr -d ' ')
+[ "$magic" = 762f3101 ] && { echo "ok   sweep --image - writes the EXR"; echo pass >>"$E2E_COUNTS"; } ||
+    { echo "FAIL sweep --image - writes the EXR: magic $magic"; echo fail >>"$E2E_COUNTS"; }
