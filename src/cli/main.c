@@ -16,7 +16,9 @@ static void print_help(FILE *out)
                  "commands:\n");
     for (int i = 0; i < command_count; i++)
         fprintf(out, "  %-8s %s\n", commands[i]->name, commands[i]->summary);
-    fprintf(out, "\n'shadecalc COMMAND --help' describes a command; 'man shadecalc' all of them.\n"
+    fprintf(out, "\n'shadecalc COMMAND --help' (or 'shadecalc help COMMAND') describes a command;\n"
+                 "'man shadecalc' all of them. Options may follow the operands; '--' ends them;\n"
+                 "-1.5 and -(x) are operands; a file named '-' is standard input or output.\n"
                  "Exit status: 0 ok, 1 runtime error, 2 usage error.\n");
 }
 
