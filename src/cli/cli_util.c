@@ -81,7 +81,7 @@ static int option_span(const char *arg, const char *optstring, const struct opti
         return o && o->has_arg == required_argument && !strchr(arg, '=') ? 2 : 1;
     }
     for (const char *c = arg + 1; *c; c++) {
-        const char *spec = *c == ':' ? NULL : strchr(optstring, *c);
+        const char *spec = *c == ':' || *c == '+' ? NULL : strchr(optstring, *c);
         if (spec && spec[1] == ':')
             return c[1] ? 1 : 2;
     }
@@ -146,7 +146,7 @@ int sc_getopt(int argc, char **argv, const char *optstring, const struct option 
     return c == ':' ? '?' : c;
 }
 
-/* " (did you mean '--NAME'?)" for a mistyped long option, else "". */
+/* "; did you mean '--NAME'?" for a mistyped long option, else the hint at '--'. */
 static const char *option_hint(const char *arg, char *buf, size_t size)
 {
     char name[64];
