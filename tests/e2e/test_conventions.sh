@@ -13,12 +13,10 @@ expect "sweep: the table written"         0 'x,value
 0.5,1
 1,2' '' -- sweep --var x=0:1:3 'x*2.0'
 expect "sweep: --var after EXPR"          0 '~0.5,1' '' -- sweep 'x*2.0' --var x=0:1:3
-expect "check: option after nothing"      0 '*' '' -- check -t 0 --brdf lambert
 expect "normal: options after --triangle" 0 'nx,ny,nz,area,degenerate
 0,0,1,0.5,0' '' -- normal --triangle 0,0,0 1,0,0 0,1,0 -f csv
 expect "normal: -f before the last points" 0 'nx,ny,nz,area,degenerate
 0,0,1,0.5,0' '' -- normal --triangle 0,0,0 -f csv 1,0,0 0,1,0
-expect "shade: options after --light"     0 '*' '' -- shade --light 'directional dir=0,0,1' -p double
 
 # '--' ends the options.
 expect "eval: -- then a negative number"  0 '-1' '' -- eval -- -1
