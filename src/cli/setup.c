@@ -76,13 +76,9 @@ int setup_set_value(shade_setup *s, const char *name, const char *value, const c
             *flags[i] = 1;
         return SC_EXIT_OK;
     }
-    sc_suggestion hint;
-    sc_suggest_init(&hint, name);
-    for (int i = 0; i < 6; i++)
-        sc_suggest_consider(&hint, names[i]);
-    sc_suggest_consider(&hint, "light");
-    sc_suggest_consider(&hint, "brdf");
-    const char *best = sc_suggest_best(&hint);
+    static const char *const items[] = {"light", "brdf", "ambient", "n", "v", "p", "eye",
+                                        "tangent", NULL};
+    const char *best = sc_suggest_among(name, items);
     sc_error("%sunknown item '%s'%s%s%s", where, name,
              best ? " (did you mean '" : "", best ? best : "", best ? "'?)" : "");
     return SC_EXIT_USAGE;

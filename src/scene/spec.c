@@ -123,9 +123,11 @@ static int store(const key_def *k, void *target, const char *value, const char *
     if (ok)
         return 0;
     char words[160], shown[SHOWN];
-    return fail(err, size, "%s: %s=%s: expected %s", what, k->key,
+    const char *near = k->kind == V_ENUM ? sc_suggest_among(value, k->names) : NULL;
+    return fail(err, size, "%s: %s=%s: expected %s%s%s%s", what, k->key,
                 sc_escape(value, shown, sizeof shown),
-                k->kind == V_ENUM ? word_list(k->names, words, sizeof words) : k->help);
+                k->kind == V_ENUM ? word_list(k->names, words, sizeof words) : k->help,
+                near ? " (did you mean '" : "", near ? near : "", near ? "'?)" : "");
 }
 
 /* ---- items ---- */
@@ -242,11 +244,7 @@ static int fail_kind(char *err, size_t size, const char *what, const char *const
                      const char *kind)
 {
     char shown[SHOWN], words[160];
-    sc_suggestion s;
-    sc_suggest_init(&s, kind);
-    for (int i = 0; kinds[i]; i++)
-        sc_suggest_consider(&s, kinds[i]);
-    const char *near = sc_suggest_best(&s);
+    const char *near = sc_suggest_among(kind, kinds);
     return fail(err, size, "%s: unknown kind '%s' (%s%s%s%s)", what,
                 sc_escape(kind, shown, sizeof shown), near ? "did you mean '" : "",
                 near ? near : "", near ? "'? " : "", word_list(kinds, words, sizeof words));

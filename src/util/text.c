@@ -56,6 +56,15 @@ const char *sc_suggest_best(const sc_suggestion *s)
     return s->best && s->distance <= limit ? s->best : NULL;
 }
 
+const char *sc_suggest_among(const char *word, const char *const *names)
+{
+    sc_suggestion s;
+    sc_suggest_init(&s, word);
+    for (; *names; names++)
+        sc_suggest_consider(&s, *names);
+    return sc_suggest_best(&s);
+}
+
 /* The length of the valid UTF-8 sequence at s (at most len bytes), or 0 if it is not one. */
 static size_t utf8_length(const unsigned char *s, size_t len)
 {

@@ -21,6 +21,9 @@ void sc_suggest_consider(sc_suggestion *s, const char *candidate);
  * length (at least 1, at most 3) and the candidate is not the word itself; else NULL. */
 const char *sc_suggest_best(const sc_suggestion *s);
 
+/* The same over a NULL-terminated list of names. */
+const char *sc_suggest_among(const char *word, const char *const *names);
+
 /* Optimal-string-alignment distance: insertions, deletions, substitutions and transpositions
  * of adjacent characters each count 1 (bytes; words longer than 63 bytes count as far). */
 size_t sc_edit_distance(const char *a, const char *b);

@@ -32,6 +32,7 @@ expect "spec: did you mean a kind"        2 '' "~unknown kind 'phonk' (did you m
 expect "spec: did you mean a light kind"  2 '' "~unknown kind 'piont' (did you mean 'point'?" -- shade -l 'piont pos=0,0,1'
 expect "spec: shininess= means m="        2 '' "error: brdf phong: unknown key 'shininess' (did you mean 'm='?)" -- shade -l "$sun" -b 'phong shininess=8'
 expect "spec: a near key"                 2 '' "~unknown key 'alpah' (did you mean 'alpha='?)" -- shade -l "$sun" -b 'ward alpah=0.1'
+expect "spec: did you mean an atten= word"  2 '' "error: light point: atten=pixr: expected none|inverse-square|clq|window|pixar|windowed (did you mean 'pixar'?)" -- shade -l 'point pos=0,0,1 atten=pixr'
 expect "spec: a key of another kind"      2 '' "error: light point: unknown key 'dir' (a key of other kinds)" -- shade -l 'point pos=0,0,1 dir=0,0,1'
 expect "eval: did you mean normalize"     2 '' "~unknown function 'normalise' (did you mean 'normalize'?)" -- eval 'normalise(vec3(1))'
 

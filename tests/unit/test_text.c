@@ -33,11 +33,7 @@ static void edit_distance_of_long_words_is_far(void **state)
 
 static const char *suggest(const char *word, const char *const *names)
 {
-    sc_suggestion s;
-    sc_suggest_init(&s, word);
-    for (; *names; names++)
-        sc_suggest_consider(&s, *names);
-    return sc_suggest_best(&s);
+    return sc_suggest_among(word, names);
 }
 
 static void suggestion_is_the_nearest_within_a_third(void **state)
