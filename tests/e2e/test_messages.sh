@@ -82,10 +82,10 @@ f 1 2 3
 expect_file "obj: the image from stdin"   "$t/stdin.exr"
 
 # Output names that say another format: refused before any work; --output-dir is created.
-expect "render -o t.png is refused"       2 '' 'error: render: -o t.png: writes exr, not png: name it .exr (and convert it if need be)' -- render -o t.png
-expect "sweep --plot p.png is refused"    2 '' '~--plot p.png: writes svg, not png' -- sweep --var x=0:1:2 x --plot p.png
-expect "sweep --image i.png is refused"   2 '' '~--image i.png: writes exr, not png' -- sweep --var x=0:1:2 --var y=0:1:2 x --image i.png
-expect "sweep -o t.svg is refused"        2 '' 'error: sweep: -o t.svg: writes a table, not svg' -- sweep --var x=0:1:2 x -o t.svg
+expect "render -o t.png is refused"       2 '' "error: render: -o $t/t.png: writes exr, not png: name it .exr (and convert it if need be)" -- render -o "$t/t.png"
+expect "sweep --plot p.png is refused"    2 '' '~p.png: writes svg, not png' -- sweep --var x=0:1:2 x --plot "$t/p.png"
+expect "sweep --image i.png is refused"   2 '' '~i.png: writes exr, not png' -- sweep --var x=0:1:2 --var y=0:1:2 'x+y' --image "$t/i.png"
+expect "sweep -o t.svg is refused"        2 '' "error: sweep: -o $t/t.svg: writes a table, not svg" -- sweep --var x=0:1:2 x -o "$t/t.svg"
 expect "sweep --plot to '-' is fine"      0 '~<svg' '' -- sweep --var x=0:1:2 x --plot -
 expect "render --compare creates --output-dir" 0 '~gouraud' '' -- render --compare --size 16x16 --output-dir "$t/cmp/new"
 expect_file "the compare images are there" "$t/cmp/new/render-exact.exr"
