@@ -72,6 +72,9 @@ int sc_mesh_vertex_normals(sc_mesh *m, sc_normal_weighting w);
 /* n = (b − a) × (c − a) normalized; (0, 0, 0) if the triangle is degenerate (above). */
 void sc_triangle_normal(const double a[3], const double b[3], const double c[3], double n[3]);
 
+/* Reads a Wavefront OBJ file ("-": standard input). 0; -1 with err when the content is
+ * malformed (err names FILE:LINE); -2 with err when the file cannot be opened or read, or
+ * memory runs out. */
 int sc_obj_read(const char *path, sc_mesh *out, char *err, size_t errsize);
 int sc_obj_write(const char *path, const sc_mesh *m, char *err, size_t errsize); /* atomic */
 

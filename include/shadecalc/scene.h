@@ -18,7 +18,11 @@
 
 #include "shadecalc/shade.h"
 
-/* Returns 0, or -1 with a message in err ("light point: missing pos=..."). */
+/* Returns 0; or 1 when the spec is valid but a key has no effect under its other choices, with
+ * the warning in err ("light spot: inner= has no effect with spot=opengl"); or -1 with the error
+ * in err ("light point: missing pos=..."). A key given twice, two keys that set the same
+ * parameter (alpha= and ay=, inner= and theta=) and a negative light colour are errors; an
+ * unknown kind or key names the closest valid one. */
 int sc_light_parse(const char *spec, sc_light *out, char *err, size_t size);
 int sc_model_parse(const char *spec, sc_model *out, char *err, size_t size);
 

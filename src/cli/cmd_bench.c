@@ -158,7 +158,7 @@ static int parse_options(int argc, char **argv, options *o)
     int c, status = SC_EXIT_OK;
     long repeat;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = getopt_long(argc, argv, "li:t:n:r:f:h", longs, NULL)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "li:t:n:r:f:h", longs)) != -1) {
         switch (c) {
         case 'l': o->list = 1; break;
         case 'i': status = parse_isas(optarg, o); break;

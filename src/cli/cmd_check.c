@@ -119,10 +119,13 @@ static int add_brdf(check_options *o, const char *spec)
         sc_error("check: too many --brdf (at most %d)", MAX_BRDFS);
         return SC_EXIT_USAGE;
     }
-    if (sc_model_parse(spec, &o->models[o->n], err, sizeof err) < 0) {
+    int parsed = sc_model_parse(spec, &o->models[o->n], err, sizeof err);
+    if (parsed < 0) {
         sc_error("%s", err);
         return SC_EXIT_USAGE;
     }
+    if (parsed > 0)
+        sc_warning("%s", err);
     if (o->models[o->n].kind != SC_MODEL_BRDF) {
         sc_error("check: '%s' is a legacy shading model, not a BRDF", spec);
         return SC_EXIT_USAGE;
@@ -140,7 +143,7 @@ static int parse_options(int argc, char **argv, check_options *o)
     int c, status = SC_EXIT_OK;
     long order;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = getopt_long(argc, argv, "b:t:o:f:h", longs, NULL)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "b:t:o:f:h", longs)) != -1) {
         switch (c) {
         case 'b': status = add_brdf(o, optarg); break;
         case 't': status = parse_thetas(optarg, o); break;

@@ -46,7 +46,9 @@ static void usage(FILE *out)
             "per line of standard input). Statements 'NAME = EXPR;' may precede the expression.\n"
             "\n"
             "  -p, --precision P   double|highp|mediump|lowp (default highp)\n"
-            "  -f, --format F      glsl|csv|json (default glsl; json: one object per line)\n"
+            "  -f, --format F      glsl|csv|jsonl (default glsl; jsonl: JSON Lines, one\n"
+            "                      object per line, also called json; csv: an expression\n"
+            "                      column, then the components)\n"
             "  -D, --define N=EXPR define variable N for every expression (repeatable)\n"
             "      --hex           print bit patterns of the precision instead of decimals\n"
             "      --ulp           also print the error against the double reference, in ULP\n"
@@ -233,8 +235,8 @@ static void csv_column_name(FILE *out, sc_type t, int k)
         fputc("xyzw"[k], out);
 }
 
-/* One header for all rows: named components when every result has the same type, else
- * `type,c0..cN` padded with empty fields. */
+/* One header for all rows: the expression, then named components when every result has the
+ * same type, else `type,c0..cN` padded with empty fields. */
 static void print_csv_header(FILE *out, const sc_type *types, int count, const eval_options *o)
 {
     int mixed = 0, width = 0;
@@ -243,10 +245,10 @@ static void print_csv_header(FILE *out, const sc_type *types, int count, const e
         if (sc_type_size(types[i]) > width)
             width = sc_type_size(types[i]);
     }
-    fputs(mixed ? "type" : "", out);
+    fputs(mixed ? "expression,type" : "expression", out);
     for (int pass = 0; pass < 1 + o->ulp; pass++)
         for (int k = 0; k < width; k++) {
-            fputs(k || pass || mixed ? "," : "", out);
+            fputc(',', out);
             if (mixed)
                 fprintf(out, "c%d", k);
             else
@@ -256,14 +258,31 @@ static void print_csv_header(FILE *out, const sc_type *types, int count, const e
     fputc('\n', out);
 }
 
-static void print_csv(FILE *out, const sc_value *v, const sc_value *ref, const eval_options *o,
-                      int mixed, int width)
+/* A CSV field (RFC 4180): quoted, with quotes doubled, when it has a comma, quote or newline. */
+static void print_csv_field(FILE *out, const char *s)
+{
+    if (!s[strcspn(s, ",\"\r\n")]) {
+        fputs(s, out);
+        return;
+    }
+    fputc('"', out);
+    for (; *s; s++) {
+        if (*s == '"')
+            fputc('"', out);
+        fputc(*s, out);
+    }
+    fputc('"', out);
+}
+
+static void print_csv(FILE *out, const char *src, const sc_value *v, const sc_value *ref,
+                      const eval_options *o, int mixed, int width)
 {
     int n = sc_type_size(v->type);
+    print_csv_field(out, src);
     if (mixed)
-        fprintf(out, "%s", sc_type_name(v->type));
+        fprintf(out, ",%s", sc_type_name(v->type));
     for (int k = 0; k < width; k++) {
-        fputs(k || mixed ? "," : "", out);
+        fputc(',', out);
         if (k < n)
             print_number(out, v->v[k], o, 0);
     }
@@ -307,6 +326,20 @@ static int read_stdin_expressions(expression_list *list)
     return 0;
 }
 
+/* glsl, csv, or jsonl (JSON Lines; "json" names the same, as sweep and bench accept both). */
+static int parse_format(const char *arg, int *format)
+{
+    static const char *const names[] = {"glsl", "csv", "jsonl", "json"};
+    static const int formats[] = {FMT_GLSL, FMT_CSV, FMT_JSON, FMT_JSON};
+    for (int i = 0; i < 4; i++)
+        if (strcmp(arg, names[i]) == 0) {
+            *format = formats[i];
+            return SC_EXIT_OK;
+        }
+    sc_error("eval: unknown format '%s' (glsl, csv, jsonl)", arg);
+    return SC_EXIT_USAGE;
+}
+
 static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
 {
     static const struct option longs[] = {
@@ -317,7 +350,7 @@ static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
     const char *defines[MAX_DEFINES + 1];
     int n_defines = 0, c;
     sc_getopt_reset();
-    while ((c = getopt_long(argc, argv, "+p:f:D:h", longs, NULL)) != -1) {
+    while ((c = sc_getopt(argc, argv, "+p:f:D:h", longs)) != -1) {
         switch (c) {
         case 'p':
             if (sc_prec_parse(optarg, &o->prec) < 0) {
@@ -326,11 +359,8 @@ static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
             }
             break;
         case 'f':
-            if (strcmp(optarg, "glsl") && strcmp(optarg, "csv") && strcmp(optarg, "json")) {
-                sc_error("eval: unknown format '%s' (glsl, csv, json)", optarg);
+            if (parse_format(optarg, &o->format) != SC_EXIT_OK)
                 return SC_EXIT_USAGE;
-            }
-            o->format = optarg[0] == 'g' ? FMT_GLSL : optarg[0] == 'c' ? FMT_CSV : FMT_JSON;
             break;
         case 'D':
             if (n_defines <= MAX_DEFINES)
@@ -383,7 +413,7 @@ static int run_list(const expression_list *list, const define_set *d, const eval
         else if (o->format == FMT_JSON)
             print_json(stdout, list->src[i], &v, &ref, o);
         else
-            print_csv(stdout, &v, &ref, o, mixed, width);
+            print_csv(stdout, list->src[i], &v, &ref, o, mixed, width);
     }
     for (int i = 0; progs && i < list->count; i++)
         sc_expr_free(progs[i]);

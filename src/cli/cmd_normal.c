@@ -227,13 +227,19 @@ static int parse_point(const char *arg, double *p)
     return SC_EXIT_OK;
 }
 
-/* --triangle takes its first point as the option's value and the next two arguments. */
-static int parse_triangle(int argc, char **argv, normal_options *o)
+/* --triangle takes its first point as the option's value, the other two from the operands. */
+static int parse_triangle(const char *arg, normal_options *o)
 {
-    int status = parse_point(optarg, o->triangle[0]);
+    o->has_triangle = 1;
+    return parse_point(arg, o->triangle[0]);
+}
+
+/* The second and third points of --triangle: the first two operands. */
+static int parse_triangle_rest(int argc, char **argv, normal_options *o)
+{
+    int status = SC_EXIT_OK;
     for (int k = 1; k < 3 && status == SC_EXIT_OK; k++)
         status = parse_point(optind < argc ? argv[optind++] : NULL, o->triangle[k]);
-    o->has_triangle = 1;
     return status;
 }
 
@@ -298,11 +304,11 @@ static int parse_options(int argc, char **argv, normal_options *o)
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
     while (status == SC_EXIT_OK &&
-           (c = getopt_long(argc, argv, "s:u:t:m:ef:h", longs, NULL)) != -1) {
+           (c = sc_getopt(argc, argv, "s:u:t:m:ef:h", longs)) != -1) {
         switch (c) {
         case 's': status = parse_surface(optarg, o); break;
         case 'u': status = parse_uv(optarg, o); break;
-        case 't': status = parse_triangle(argc, argv, o); break;
+        case 't': status = parse_triangle(optarg, o); break;
         case 'm': status = parse_matrix(optarg, o); break;
         case 'e': o->explain = 1; break;
         case 'f': status = parse_format(optarg, o); break;
@@ -310,6 +316,8 @@ static int parse_options(int argc, char **argv, normal_options *o)
         default: return sc_usage_error("normal", argv, optopt);
         }
     }
+    if (status == SC_EXIT_OK && o->has_triangle)
+        status = parse_triangle_rest(argc, argv, o);
     if (status == SC_EXIT_OK && optind < argc) {
         sc_error("normal: unexpected argument '%s'", argv[optind]);
         status = SC_EXIT_USAGE;

@@ -1,10 +1,12 @@
 /* shadecalc render — rasterize a tessellated surface or an OBJ mesh with flat, Gouraud, Phong or
  * exact shading into an EXR, or the lecture's Gouraud/Phong comparison with its errors
  * (SPEC §8). */
+#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli/cli.h"
 #include "cli/progress.h"
@@ -204,7 +206,7 @@ static int apply_value(render_options *o, int c, const char *arg)
     case OPT_EYE: return parse_vector("--eye", arg, o->eye, &o->have_eye);
     case OPT_AT: return parse_vector("--at", arg, o->at, &o->have_at);
     case OPT_UP: return parse_vector("--up", arg, o->up, NULL);
-    case 'o': o->output = arg; break;
+    case 'o': o->output = arg; return sc_check_output_name("render", "-o", arg, "exr");
     case OPT_OUTPUT_DIR: o->output_dir = arg; break;
     case OPT_DEPTH: o->depth = 1; break;
     case OPT_NORMALS: o->normals = 1; break;
@@ -283,7 +285,7 @@ static int parse_options(int argc, char **argv, shade_setup *s, render_options *
     int n = 0, c, status = todo ? SC_EXIT_OK : SC_EXIT_RUNTIME;
     sc_getopt_reset();
     while (status == SC_EXIT_OK &&
-           (c = getopt_long(argc, argv, "n:l:b:a:s:o:j:p:f:h", long_options, NULL)) != -1) {
+           (c = sc_getopt(argc, argv, "n:l:b:a:s:o:j:p:f:h", long_options)) != -1) {
         switch (c) {
         case 's': scene = optarg; break;
         case 'l':
@@ -379,9 +381,10 @@ static int tessellate(const sc_surface *surface, int triangles, sc_mesh *m)
 static int load_obj(const char *path, sc_mesh *m)
 {
     char err[512];
-    if (sc_obj_read(path, m, err, sizeof err) < 0) {
+    int read = sc_obj_read(path, m, err, sizeof err);
+    if (read < 0) {
         sc_error("%s", err);
-        return SC_EXIT_RUNTIME;
+        return read == -1 ? SC_EXIT_USAGE : SC_EXIT_RUNTIME; /* malformed content: 2 */
     }
     if (!m->normal && sc_mesh_vertex_normals(m, SC_NORMALS_PLAIN) < 0) {
         sc_error("render: out of memory");
@@ -598,9 +601,36 @@ static void free_compare(compare_state *c)
     sc_surface_free(c->surface);
 }
 
+/* Creates directory `path` and its missing parents (mkdir -p); an exit status. */
+static int make_directory(const char *path)
+{
+    char dir[4096];
+    if (snprintf(dir, sizeof dir, "%s", path) >= (int)sizeof dir) {
+        sc_error("render: --output-dir %.40s...: too long", path);
+        return SC_EXIT_USAGE;
+    }
+    for (char *p = dir + 1;; p++) {
+        if (*p != '/' && *p != '\0')
+            continue;
+        char end = *p;
+        *p = '\0';
+        struct stat st;
+        if (mkdir(dir, 0777) < 0 && (errno != EEXIST || stat(dir, &st) < 0 || !S_ISDIR(st.st_mode))) {
+            sc_error("render: --output-dir %s: %s", dir,
+                     errno == EEXIST ? "not a directory" : strerror(errno));
+            return SC_EXIT_RUNTIME;
+        }
+        *p = end;
+        if (end == '\0')
+            return SC_EXIT_OK;
+    }
+}
+
 static int prepare_compare(const render_options *o, compare_state *c)
 {
-    int status = load_surface(o, &c->surface);
+    int status = make_directory(o->output_dir); /* before the work, not after it */
+    if (status == SC_EXIT_OK)
+        status = load_surface(o, &c->surface);
     for (int i = 0; status == SC_EXIT_OK && i < MESHES; i++)
         status = tessellate(c->surface, mesh_sizes[i], &c->meshes[i]);
     if (status != SC_EXIT_OK)

@@ -66,51 +66,69 @@ static const char *light_kind_name(sc_light_kind k)
     return k == SC_LIGHT_DIRECTIONAL ? "directional" : k == SC_LIGHT_POINT ? "point" : "spot";
 }
 
+/* One intermediate of --explain: its label in the text form (a leading "\n" starts a line),
+ * its key in the JSON form, and its 1 or 3 values. Both forms print the same list. */
+typedef struct {
+    const char *text, *key;
+    int n;
+    const double *v;
+} explain_term;
+
+enum { MAX_TERMS = 20 };
+
+/* The intermediates of light k, in the order they are printed; returns their count. */
+static int light_terms(const sc_light *light, const sc_light_terms *t, const sc_model *m,
+                       explain_term *out)
+{
+    const sc_light_sample *ls = &t->light;
+    int n = 0, brdf = m->kind == SC_MODEL_BRDF;
+    int ward = brdf && m->brdf.kind == SC_BRDF_WARD;
+    int cook_torrance = brdf && m->brdf.kind == SC_BRDF_COOK_TORRANCE;
+    out[n++] = (explain_term){"  l = ", "l", 3, ls->l};
+    out[n++] = (explain_term){"  r = ", "r", 1, &ls->r};
+    out[n++] = (explain_term){"\n  f_d = ", "f_d", 1, &ls->f_d};
+    out[n++] = (explain_term){"  spot = ", "spot", 1, &ls->spot};
+    if (light->kind == SC_LIGHT_SPOT)
+        out[n++] = (explain_term){"  cos theta_s = ", "cos_theta_s", 1, &ls->cos_s};
+    out[n++] = (explain_term){"  E_L = ", "E_L", 3, ls->E};
+    out[n++] = (explain_term){"\n  cos theta_i = ", "cos_theta_i", 1, &t->brdf.cos_i};
+    if (brdf)
+        out[n++] = (explain_term){"  cos theta_o = ", "cos_theta_o", 1, &t->brdf.cos_o};
+    out[n++] = (explain_term){"  cos theta_h = ", "cos_theta_h", 1, &t->brdf.cos_h};
+    out[n++] = (explain_term){brdf ? "\n  f: diffuse " : "\n  diffuse colour ", "diffuse", 3,
+                              t->brdf.diffuse};
+    out[n++] = (explain_term){brdf ? "  specular " : "  specular colour ", "specular", 3,
+                              t->brdf.specular};
+    if (ward)
+        out[n++] = (explain_term){"  exp term = ", "exp_term", 1, &t->brdf.D};
+    if (cook_torrance) {
+        out[n++] = (explain_term){"  D = ", "D", 1, &t->brdf.D};
+        out[n++] = (explain_term){"  G = ", "G", 1, &t->brdf.G};
+        out[n++] = (explain_term){"  F = ", "F", 3, t->brdf.F};
+    }
+    out[n++] = (explain_term){"\n  ambient ", "ambient", 3, t->ambient};
+    out[n++] = (explain_term){"  contribution ", "contribution", 3, t->contribution};
+    return n;
+}
+
+static void term_value(FILE *out, const explain_term *t, sc_prec p, int json)
+{
+    if (t->n == 3)
+        triple(out, t->v, p, json);
+    else
+        number(out, t->v[0], p, json);
+}
+
 static void explain_light(FILE *out, int k, const sc_light *light, const sc_light_terms *t,
                           const sc_model *m, sc_prec p)
 {
-    const sc_light_sample *ls = &t->light;
-    fprintf(out, "light %d (%s)\n  l = ", k + 1, light_kind_name(light->kind));
-    triple(out, ls->l, p, 0);
-    fputs("  r = ", out);
-    number(out, ls->r, p, 0);
-    fputs("\n  f_d = ", out);
-    number(out, ls->f_d, p, 0);
-    fputs("  spot = ", out);
-    number(out, ls->spot, p, 0);
-    if (light->kind == SC_LIGHT_SPOT) {
-        fputs("  cos theta_s = ", out);
-        number(out, ls->cos_s, p, 0);
+    explain_term terms[MAX_TERMS];
+    int n = light_terms(light, t, m, terms);
+    fprintf(out, "light %d (%s)\n", k + 1, light_kind_name(light->kind));
+    for (int i = 0; i < n; i++) {
+        fputs(terms[i].text, out);
+        term_value(out, &terms[i], p, 0);
     }
-    fputs("  E_L = ", out);
-    triple(out, ls->E, p, 0);
-    fputs("\n  cos theta_i = ", out);
-    number(out, t->brdf.cos_i, p, 0);
-    if (m->kind == SC_MODEL_BRDF) {
-        fputs("  cos theta_o = ", out);
-        number(out, t->brdf.cos_o, p, 0);
-    }
-    fputs("  cos theta_h = ", out);
-    number(out, t->brdf.cos_h, p, 0);
-    fputs(m->kind == SC_MODEL_BRDF ? "\n  f: diffuse " : "\n  diffuse colour ", out);
-    triple(out, t->brdf.diffuse, p, 0);
-    fputs(m->kind == SC_MODEL_BRDF ? "  specular " : "  specular colour ", out);
-    triple(out, t->brdf.specular, p, 0);
-    if (m->kind == SC_MODEL_BRDF &&
-        (m->brdf.kind == SC_BRDF_COOK_TORRANCE || m->brdf.kind == SC_BRDF_WARD)) {
-        fputs(m->brdf.kind == SC_BRDF_WARD ? "  exp term = " : "  D = ", out);
-        number(out, t->brdf.D, p, 0);
-        if (m->brdf.kind == SC_BRDF_COOK_TORRANCE) {
-            fputs("  G = ", out);
-            number(out, t->brdf.G, p, 0);
-            fputs("  F = ", out);
-            triple(out, t->brdf.F, p, 0);
-        }
-    }
-    fputs("\n  ambient ", out);
-    triple(out, t->ambient, p, 0);
-    fputs("  contribution ", out);
-    triple(out, t->contribution, p, 0);
     fputc('\n', out);
 }
 
@@ -146,38 +164,16 @@ static void print_csv(const sc_shade_result *r, const shade_options *o)
     fputc('\n', stdout);
 }
 
-static void json_light(const sc_light_terms *t, const sc_model *m, sc_prec p)
+static void json_light(const sc_light *light, const sc_light_terms *t, const sc_model *m,
+                       sc_prec p)
 {
-    printf("{\"l\": ");
-    triple(stdout, t->light.l, p, 1);
-    printf(", \"r\": ");
-    number(stdout, t->light.r, p, 1);
-    printf(", \"f_d\": ");
-    number(stdout, t->light.f_d, p, 1);
-    printf(", \"spot\": ");
-    number(stdout, t->light.spot, p, 1);
-    printf(", \"E_L\": ");
-    triple(stdout, t->light.E, p, 1);
-    printf(", \"cos_theta_i\": ");
-    number(stdout, t->brdf.cos_i, p, 1);
-    printf(", \"cos_theta_h\": ");
-    number(stdout, t->brdf.cos_h, p, 1);
-    printf(", \"diffuse\": ");
-    triple(stdout, t->brdf.diffuse, p, 1);
-    printf(", \"specular\": ");
-    triple(stdout, t->brdf.specular, p, 1);
-    if (m->kind == SC_MODEL_BRDF && m->brdf.kind == SC_BRDF_COOK_TORRANCE) {
-        printf(", \"D\": ");
-        number(stdout, t->brdf.D, p, 1);
-        printf(", \"G\": ");
-        number(stdout, t->brdf.G, p, 1);
-        printf(", \"F\": ");
-        triple(stdout, t->brdf.F, p, 1);
+    explain_term terms[MAX_TERMS];
+    int n = light_terms(light, t, m, terms);
+    printf("{\"kind\": \"%s\"", light_kind_name(light->kind));
+    for (int i = 0; i < n; i++) {
+        printf(", \"%s\": ", terms[i].key);
+        term_value(stdout, &terms[i], p, 1);
     }
-    printf(", \"ambient\": ");
-    triple(stdout, t->ambient, p, 1);
-    printf(", \"contribution\": ");
-    triple(stdout, t->contribution, p, 1);
     printf("}");
 }
 
@@ -191,9 +187,15 @@ static void print_json(const shade_setup *s, const sc_shade_result *r, const sha
         printf(", \"lights\": [");
         for (int k = 0; k < s->n_lights; k++) {
             fputs(k ? ", " : "", stdout);
-            json_light(&r->per_light[k], &s->model, o->prec);
+            json_light(&s->lights[k], &r->per_light[k], &s->model, o->prec);
         }
         printf("]");
+        if (s->model.kind == SC_MODEL_OPENGL && s->model.separate_specular) {
+            printf(", \"primary\": ");
+            triple(stdout, r->primary, o->prec, 1);
+            printf(", \"secondary\": ");
+            triple(stdout, r->secondary, o->prec, 1);
+        }
     }
     printf("}\n");
 }
@@ -246,7 +248,7 @@ static int parse_options(int argc, char **argv, shade_setup *s, shade_options *o
     const char *scene = NULL;
     int n = 0, c, status = todo ? SC_EXIT_OK : SC_EXIT_RUNTIME;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = getopt_long(argc, argv, "l:b:a:s:p:f:eh", longs, NULL)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "l:b:a:s:p:f:eh", longs)) != -1) {
         switch (c) {
         case 's': scene = optarg; break;
         case 'p':

@@ -49,7 +49,8 @@ static void usage(FILE *out)
             "      --n, --v, --p, --eye, --tangent X,Y,Z   the geometry, as for shade\n"
             "      --preset NAME        attenuation|spot|lobe|albedo: the lecture's figures\n"
             "  -p, --precision P        double|highp|mediump|lowp (default highp)\n"
-            "  -f, --format F           csv|tsv|jsonl (default csv)\n"
+            "  -f, --format F           csv|tsv|jsonl (default csv; jsonl: JSON Lines, one\n"
+            "                           object per row, also called json)\n"
             "  -o, --output FILE        the table (default standard output; with --plot or\n"
             "                           --image, the table is written only when this is given)\n"
             "  -j, --threads N          worker threads (default: the number of processors)\n"
@@ -143,12 +144,12 @@ static int option_value(sweep_options *o, int c, const char *arg)
             return SC_EXIT_OK;
         sc_error("sweep: unknown precision '%s' (double, highp, mediump, lowp)", arg);
         return SC_EXIT_USAGE;
-    case 'f':
-        if (sc_sweep_format_parse(arg, &o->format) == 0)
+    case 'f': /* "json" names JSON Lines too, as for eval */
+        if (sc_sweep_format_parse(strcmp(arg, "json") ? arg : "jsonl", &o->format) == 0)
             return SC_EXIT_OK;
         sc_error("sweep: unknown format '%s' (csv, tsv, jsonl)", arg);
         return SC_EXIT_USAGE;
-    case 'o': o->output = arg; return SC_EXIT_OK;
+    case 'o': o->output = arg; return sc_check_output_name("sweep", "-o", arg, "table");
     case 'j':
         if (sc_parse_long(arg, &o->threads) == 0 && o->threads >= 1 && o->threads <= MAX_THREADS)
             return SC_EXIT_OK;
@@ -182,7 +183,7 @@ static int heatmap_option(sweep_picture_options *o, int c, const char *arg)
 static int picture_option(sweep_picture_options *o, int c, const char *arg)
 {
     switch (c) {
-    case OPT_PLOT: o->plot = arg; return SC_EXIT_OK;
+    case OPT_PLOT: o->plot = arg; return sc_check_output_name("sweep", "--plot", arg, "svg");
     case OPT_POLAR: o->polar = 1; return SC_EXIT_OK;
     case OPT_TITLE: o->title = arg; return SC_EXIT_OK;
     case OPT_XLABEL: o->xlabel = arg; return SC_EXIT_OK;
@@ -190,7 +191,7 @@ static int picture_option(sweep_picture_options *o, int c, const char *arg)
     case OPT_XLOG: o->xlog = 1; return SC_EXIT_OK;
     case OPT_YLOG: o->ylog = 1; return SC_EXIT_OK;
     case OPT_YRANGE: return parse_yrange(arg, o);
-    case OPT_IMAGE: o->image = arg; return SC_EXIT_OK;
+    case OPT_IMAGE: o->image = arg; return sc_check_output_name("sweep", "--image", arg, "exr");
     case OPT_EXR_TYPE:
         if (strcmp(arg, "half") == 0 || strcmp(arg, "float") == 0) {
             o->exr_half = arg[0] == 'h';
@@ -229,7 +230,7 @@ static int parse_options(int argc, char **argv, sweep_options *o)
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
     while (status == SC_EXIT_OK &&
-           (c = getopt_long(argc, argv, "+l:b:a:s:p:f:o:j:h", longs, NULL)) != -1) {
+           (c = sc_getopt(argc, argv, "+l:b:a:s:p:f:o:j:h", longs)) != -1) {
         if (c == 'h') {
             usage(stdout);
             return -1;
@@ -330,19 +331,20 @@ static void show_progress(sc_progress *bar, uint64_t done, uint64_t total)
 
 /* ---- running ---- */
 
-/* The table's columns: the variables, then the plan's results; a result named like a variable
- * (--var r=... and the r,g,b of a colour) becomes result_NAME. */
+/* The table's columns: the variables, then the plan's results; when a result is named like a
+ * variable (--var r=... and the r,g,b of a colour), every result becomes result_NAME, so that
+ * the results keep one naming. */
 static void table_names(const sc_sweep_grid *g, const sweep_plan *plan, const char **names,
                         char (*renamed)[SC_SWEEP_NAME_MAX + 8])
 {
+    int clash = 0;
     for (int k = 0; k < g->n; k++)
         names[k] = g->var[k].name;
+    for (int c = 0; c < plan->n_results; c++)
+        clash |= sc_sweep_grid_find(g, plan->columns[c]) >= 0;
     for (int c = 0; c < plan->n_results; c++) {
-        names[g->n + c] = plan->columns[c];
-        if (sc_sweep_grid_find(g, plan->columns[c]) >= 0) {
-            snprintf(renamed[c], sizeof renamed[c], "result_%s", plan->columns[c]);
-            names[g->n + c] = renamed[c];
-        }
+        snprintf(renamed[c], sizeof renamed[c], "result_%s", plan->columns[c]);
+        names[g->n + c] = clash ? renamed[c] : plan->columns[c];
     }
 }
 
@@ -438,6 +440,22 @@ static void default_pictures(sweep_picture_options *pic, const sweep_plan *plan,
     pic->xlog |= g->n > 0 && g->var[0].spacing == SC_SPACING_LOG;
 }
 
+/* A variable nothing reads draws flat curves: say so. */
+static void warn_unused(const sc_sweep_grid *g, const sweep_plan *plan, const char *expr)
+{
+    for (int k = 0; k < g->n; k++) {
+        const char *name = g->var[k].name;
+        if (!(plan->unused >> k & 1u))
+            continue;
+        if (expr)
+            sc_warning("sweep: EXPR does not use variable '%s': its values all give the same "
+                       "results", name);
+        else
+            sc_warning("sweep: nothing reads variable '%s' (no spec has $%s and it is not an "
+                       "angle of l or v): its values all give the same results", name, name);
+    }
+}
+
 static int sweep(sweep_options *o, int argc, char **argv)
 {
     sc_sweep_grid grid = {.n = 0};
@@ -447,6 +465,8 @@ static int sweep(sweep_options *o, int argc, char **argv)
     int status = build_grid(o, &grid);
     if (status == SC_EXIT_OK)
         status = make_plan(o, &grid, &plan);
+    if (status == SC_EXIT_OK)
+        warn_unused(&grid, &plan, o->expr);
     if (status == SC_EXIT_OK && o->pictures.polar && (o->pictures.xlog || o->pictures.ylog)) {
         sc_error("sweep: --polar has no log axes");
         status = SC_EXIT_USAGE;

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "commands.h"
+#include "util/text.h"
 
 static const sc_command *const commands[] = {SC_COMMANDS NULL};
 static const int command_count = (int)(sizeof commands / sizeof commands[0]) - 1;
@@ -15,8 +16,32 @@ static void print_help(FILE *out)
                  "commands:\n");
     for (int i = 0; i < command_count; i++)
         fprintf(out, "  %-8s %s\n", commands[i]->name, commands[i]->summary);
-    fprintf(out, "\n'shadecalc COMMAND --help' describes a command; 'man shadecalc' all of them.\n"
+    fprintf(out, "\n'shadecalc COMMAND --help' (or 'shadecalc help COMMAND') describes a command;\n"
+                 "'man shadecalc' all of them. Options may follow the operands; '--' ends them;\n"
+                 "-1.5 and -(x) are operands; a file named '-' is standard input or output.\n"
                  "Exit status: 0 ok, 1 runtime error, 2 usage error.\n");
+}
+
+static void unknown_command(const char *name)
+{
+    sc_suggestion s;
+    sc_suggest_init(&s, name);
+    for (int i = 0; i < command_count; i++)
+        sc_suggest_consider(&s, commands[i]->name);
+    const char *best = sc_suggest_best(&s);
+    sc_error("unknown command '%s'%s%s%s (see 'shadecalc --help')",
+             name, best ? "; did you mean '" : "", best ? best : "",
+             best ? "'?" : "");
+}
+
+/* Runs the command argv[0] with its arguments. */
+static int run_command(int argc, char **argv)
+{
+    for (int i = 0; i < command_count; i++)
+        if (strcmp(argv[0], commands[i]->name) == 0)
+            return commands[i]->run(argc, argv);
+    unknown_command(argv[0]);
+    return SC_EXIT_USAGE;
 }
 
 int main(int argc, char **argv)
@@ -24,6 +49,10 @@ int main(int argc, char **argv)
     if (argc < 2) {
         print_help(stderr);
         return SC_EXIT_USAGE;
+    }
+    if (strcmp(argv[1], "help") == 0 && argc > 2) { /* help COMMAND: COMMAND --help */
+        char help[] = "--help", *args[] = {argv[2], help, NULL};
+        return run_command(2, args);
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
         strcmp(argv[1], "help") == 0) {
@@ -34,9 +63,5 @@ int main(int argc, char **argv)
         printf("shadecalc %s\n", SC_VERSION);
         return SC_EXIT_OK;
     }
-    for (int i = 0; i < command_count; i++)
-        if (strcmp(argv[1], commands[i]->name) == 0)
-            return commands[i]->run(argc - 1, argv + 1);
-    sc_error("unknown command '%s' (see 'shadecalc --help')", argv[1]);
-    return SC_EXIT_USAGE;
+    return run_command(argc - 1, argv + 1);
 }

@@ -1,6 +1,7 @@
 /* A progress bar on standard error for long work: drawn only when standard error is a terminal
- * and only once the work has lasted `delay` seconds, so that short runs print nothing. Used by
- * sweep, render and bench. */
+ * and only once the work has lasted `delay` seconds, so that short runs print nothing; redrawn
+ * at most ten times a second, with the time left (ETA) at the rate so far. Used by sweep,
+ * render and bench. */
 #ifndef SHADECALC_CLI_PROGRESS_H
 #define SHADECALC_CLI_PROGRESS_H
 
@@ -10,6 +11,7 @@ typedef struct {
     const char *label;
     struct timespec start;
     double delay;
+    double drawn; /* seconds since start at the last redraw */
     int tty, shown;
 } sc_progress;
 

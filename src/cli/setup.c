@@ -8,6 +8,9 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "util/text.h"
+
+static int is_zero(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
 void setup_init(shade_setup *s)
 {
@@ -24,10 +27,13 @@ int setup_add_light(shade_setup *s, const char *spec, const char *where)
         sc_error("%stoo many lights (at most %d)", where, SETUP_MAX_LIGHTS);
         return SC_EXIT_USAGE;
     }
-    if (sc_light_parse(spec, &s->lights[s->n_lights], err, sizeof err) < 0) {
+    int parsed = sc_light_parse(spec, &s->lights[s->n_lights], err, sizeof err);
+    if (parsed < 0) {
         sc_error("%s%s", where, err);
         return SC_EXIT_USAGE;
     }
+    if (parsed > 0)
+        sc_warning("%s%s", where, err);
     s->n_lights++;
     return SC_EXIT_OK;
 }
@@ -35,10 +41,13 @@ int setup_add_light(shade_setup *s, const char *spec, const char *where)
 int setup_set_model(shade_setup *s, const char *spec, const char *where)
 {
     char err[256];
-    if (sc_model_parse(spec, &s->model, err, sizeof err) < 0) {
+    int parsed = sc_model_parse(spec, &s->model, err, sizeof err);
+    if (parsed < 0) {
         sc_error("%s%s", where, err);
         return SC_EXIT_USAGE;
     }
+    if (parsed > 0)
+        sc_warning("%s%s", where, err);
     s->have_model = 1;
     return SC_EXIT_OK;
 }
@@ -48,20 +57,30 @@ int setup_set_value(shade_setup *s, const char *name, const char *value, const c
     static const char *const names[] = {"ambient", "n", "v", "p", "eye", "tangent"};
     double *fields[] = {s->ambient, s->n, s->v, s->p, s->eye, s->tangent};
     int *flags[] = {NULL, NULL, &s->have_v, NULL, &s->have_eye, &s->have_tangent};
+    static const int must_not_be_zero[] = {0, 1, 1, 0, 0, 1};
     for (int i = 0; i < 6; i++) {
         if (strcmp(name, names[i]) != 0)
             continue;
         int bad = i == 0 ? sc_parse_colour(value, fields[i]) : sc_parse_vector3(value, fields[i]);
+        const char *dashes = where[0] ? "" : "--"; /* a scene file's items have none */
         if (bad) {
-            sc_error("%s--%s %s: expected %s", where, name, value,
+            sc_error("%s%s%s %s: expected %s", where, dashes, name, value,
                      i == 0 ? "a colour R,G,B (or one number)" : "three numbers X,Y,Z");
+            return SC_EXIT_USAGE;
+        }
+        if (must_not_be_zero[i] && is_zero(fields[i])) {
+            sc_error("%s%s%s %s: must not be the zero vector", where, dashes, name, value);
             return SC_EXIT_USAGE;
         }
         if (flags[i])
             *flags[i] = 1;
         return SC_EXIT_OK;
     }
-    sc_error("%sunknown item '%s'", where, name);
+    static const char *const items[] = {"light", "brdf", "ambient", "n", "v", "p", "eye",
+                                        "tangent", NULL};
+    const char *best = sc_suggest_among(name, items);
+    sc_error("%sunknown item '%s'%s%s%s", where, name,
+             best ? " (did you mean '" : "", best ? best : "", best ? "'?)" : "");
     return SC_EXIT_USAGE;
 }
 
@@ -80,9 +99,21 @@ static int apply_line(shade_setup *s, char *line, const char *where)
     return setup_set_value(s, word, rest, where);
 }
 
+/* The text of a line without its comment ('#' to the end) and surrounding blanks. */
+static char *line_text(char *line)
+{
+    line[strcspn(line, "#\r\n")] = '\0';
+    size_t len = strlen(line);
+    while (len > 0 && (line[len - 1] == ' ' || line[len - 1] == '\t'))
+        line[--len] = '\0';
+    return line + strspn(line, " \t");
+}
+
 int setup_load_file(shade_setup *s, const char *path)
 {
-    FILE *f = fopen(path, "r");
+    int from_stdin = strcmp(path, "-") == 0;
+    const char *name = from_stdin ? "standard input" : path;
+    FILE *f = from_stdin ? stdin : fopen(path, "r");
     if (!f) {
         sc_error("%s: %s", path, strerror(errno));
         return SC_EXIT_RUNTIME;
@@ -90,21 +121,26 @@ int setup_load_file(shade_setup *s, const char *path)
     char *line = NULL, where[512];
     size_t cap = 0;
     int status = SC_EXIT_OK, number = 0;
-    while (status == SC_EXIT_OK && getline(&line, &cap, f) >= 0) {
+    ssize_t len;
+    while (status == SC_EXIT_OK && (len = getline(&line, &cap, f)) >= 0) {
         number++;
-        line[strcspn(line, "\r\n")] = '\0';
-        char *text = line + strspn(line, " \t");
-        if (*text == '\0' || *text == '#')
-            continue;
-        snprintf(where, sizeof where, "%s:%d: ", path, number);
-        status = apply_line(s, text, where);
+        snprintf(where, sizeof where, "%s:%d: ", name, number);
+        if (memchr(line, '\0', (size_t)len)) {
+            sc_error("%sa NUL byte in the line", where);
+            status = SC_EXIT_USAGE;
+            break;
+        }
+        char *text = line_text(line);
+        if (*text != '\0')
+            status = apply_line(s, text, where);
     }
     if (status == SC_EXIT_OK && ferror(f)) {
-        sc_error("%s: read error", path);
+        sc_error("%s: %s", name, strerror(errno));
         status = SC_EXIT_RUNTIME;
     }
     free(line);
-    fclose(f);
+    if (!from_stdin)
+        fclose(f);
     return status;
 }
 

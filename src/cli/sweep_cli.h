@@ -23,6 +23,7 @@ typedef struct {
     void (*destroy)(void *user);
     char title[256];
     const char *ylabel;
+    unsigned unused;   /* bit k: nothing reads variable k (warned about before the run) */
     int polar;         /* a preset's default view */
     double ymin, ymax; /* a preset's y range; NaN: from the data */
     const char *reference_label; /* a preset's reference line y = reference_y, or NULL */

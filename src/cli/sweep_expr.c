@@ -1,5 +1,6 @@
 /* shadecalc sweep EXPR: a GLSL ES expression of the sweep variables, evaluated per row as
  * `shadecalc eval` evaluates it. */
+#include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -82,6 +83,20 @@ static void column_name(char *buf, size_t size, sc_type t, int k)
         snprintf(buf, size, "%c", "xyzw"[k]);
 }
 
+static int is_word_char(char c) { return isalnum((unsigned char)c) || c == '_'; }
+
+/* Whether identifier `name` occurs in src as a word (not after a '.', where it is a swizzle). */
+static int mentions(const char *src, const char *name)
+{
+    size_t len = strlen(name);
+    for (const char *p = strstr(src, name); p; p = strstr(p + 1, name)) {
+        char before = p > src ? p[-1] : ' ';
+        if (!is_word_char(before) && before != '.' && !is_word_char(p[len]))
+            return 1;
+    }
+    return 0;
+}
+
 int sweep_expr_plan(const char *src, const sc_sweep_grid *g, sc_prec p, int threads,
                     sweep_plan *plan)
 {
@@ -112,6 +127,8 @@ int sweep_expr_plan(const char *src, const sc_sweep_grid *g, sc_prec p, int thre
         column_name(e->names[k], sizeof e->names[k], t, k);
         plan->columns[k] = e->names[k];
     }
+    for (int k = 0; k < g->n; k++)
+        plan->unused |= (unsigned)!mentions(src, g->var[k].name) << k;
     plan->eval = eval_row;
     plan->user = e;
     plan->report = report;

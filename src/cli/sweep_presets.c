@@ -64,7 +64,7 @@ static const preset presets[] = {
         {"blinn_phong", "blinn-phong diff=0 spec=1 m=32", "blinn-phong m=32"},
         {"ward_1992", "ward diff=0 spec=1 alpha=0.2", "ward 1992 alpha=0.2"},
         {"ward_duer", "ward form=duer diff=0 spec=1 alpha=0.2", "ward duer alpha=0.2"},
-        {"cook_torrance", "cook-torrance diff=0 f0=1 alpha=0.3 F=none", "ggx alpha=0.3, F=1"}},
+        {"cook_torrance", "cook-torrance diff=0 alpha=0.3 F=none", "ggx alpha=0.3, F=1"}},
      "Directional albedo a(theta_i) (docs/formulas.md §6.9)", "albedo", NAN,
      "a = 1: energy conservation"},
 };
@@ -158,14 +158,16 @@ static int add_curve(curve_table *t, sweep_plan *plan, const char *column, const
     int c = t->n;
     int bad = t->kind == CURVE_ALBEDO ? sc_model_parse(spec, &m, err, sizeof err)
                                       : sc_light_parse(spec, &t->lights[c], err, sizeof err);
-    if (!bad && t->kind == CURVE_ALBEDO && m.kind != SC_MODEL_BRDF) {
+    if (bad >= 0 && t->kind == CURVE_ALBEDO && m.kind != SC_MODEL_BRDF) {
         snprintf(err, sizeof err, "%s: a lighting model has no albedo; give a BRDF", spec);
         bad = -1;
     }
-    if (bad) {
+    if (bad < 0) {
         sc_error("sweep: %s", err);
         return SC_EXIT_USAGE;
     }
+    if (bad > 0)
+        sc_warning("sweep: %s", err);
     t->brdfs[c] = m.brdf;
     snprintf(t->columns[c], sizeof t->columns[c], "%s", column);
     plan->columns[c] = t->columns[c];

@@ -11,6 +11,7 @@
  * plots it. phi_o defaults to phi_i (the plane of incidence), phi_i to 0; without theta_o or
  * phi_o, v comes from --v or --eye (default n); without theta_i, l = n.
  */
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -123,7 +124,7 @@ static int update_specs(const shade_plan *s, worker_state *w, const double *vars
             continue;
         int bad = t->light >= 0 ? sc_light_parse(text, &w->lights[t->light], why, sizeof why)
                                 : sc_model_parse(text, &w->model, why, sizeof why);
-        if (bad) {
+        if (bad < 0) { /* an ignored key was reported when the setup was built */
             w->last[i][0] = '\0';
             snprintf(err, errsize, "'%s': %s", text, why);
             return -1;
@@ -235,6 +236,31 @@ static int make_workers(shade_plan *s)
     return s->workers ? 0 : -1;
 }
 
+/* Whether spec text has $name or ${name}. */
+static int mentions(const char *text, const char *name)
+{
+    size_t len = strlen(name);
+    for (const char *p = strchr(text, '$'); p; p = strchr(p + 1, '$')) {
+        const char *q = p + 1 + (p[1] == '{');
+        char after = q[strncmp(q, name, len) == 0 ? len : 0];
+        if (strncmp(q, name, len) == 0 && !isalnum((unsigned char)after) && after != '_')
+            return 1;
+    }
+    return 0;
+}
+
+/* The variables nothing reads: neither an angle placing l and v nor a $name of a spec. */
+static unsigned unused_vars(const shade_plan *s)
+{
+    unsigned used = 0;
+    for (int a = 0; a < 8; a++)
+        used |= s->angle[a] >= 0 ? 1u << s->angle[a] : 0u;
+    for (int k = 0; k < s->grid->n; k++)
+        for (int i = 0; i < s->n_templates; i++)
+            used |= (unsigned)mentions(s->templates[i].text, s->grid->var[k].name) << k;
+    return ~used & ((1u << s->grid->n) - 1u);
+}
+
 static void describe(const shade_plan *s, const sweep_setup_args *a, sweep_plan *plan)
 {
     size_t n = 0;
@@ -286,6 +312,7 @@ int sweep_shade_plan(const sweep_setup_args *a, const sc_sweep_grid *g, sc_prec 
     plan->columns[1] = "g";
     plan->columns[2] = "b";
     plan->rgb = 1;
+    plan->unused = unused_vars(s);
     plan->eval = eval_row;
     plan->user = s;
     plan->destroy = destroy;

@@ -6,6 +6,7 @@
 
 #include "expr/expr_internal.h"
 #include "shadecalc/pmath.h"
+#include "util/text.h"
 
 /* Signature letters, one per argument:
  *   G  the genType (float, vec2, vec3 or vec4), the same for every G and g
@@ -197,6 +198,20 @@ int sc_builtin_exists(const char *name, int name_len)
 
 static int is_gentype(sc_type t) { return t <= SC_VEC4; }
 
+/* "unknown function 'NAME'", with the closest built-in's name when one is near. */
+static void unknown_function(const char *name, int name_len, char *msg, int msg_size)
+{
+    char word[64];
+    snprintf(word, sizeof word, "%.*s", name_len, name);
+    sc_suggestion s;
+    sc_suggest_init(&s, word);
+    for (int i = 0; i < N_BUILTINS; i++)
+        sc_suggest_consider(&s, builtins[i].name);
+    const char *best = sc_suggest_best(&s);
+    snprintf(msg, (size_t)msg_size, "unknown function '%s'%s%s%s", word,
+             best ? " (did you mean '" : "", best ? best : "", best ? "'?)" : "");
+}
+
 /* What a signature letter accepts, for messages. */
 static const char *letter_wants(char letter)
 {
@@ -299,7 +314,7 @@ int sc_builtin_resolve(const char *name, int name_len, const sc_type *args, int 
         found++;
     }
     if (!found)
-        snprintf(msg, (size_t)msg_size, "unknown function '%.*s'", name_len, name);
+        unknown_function(name, name_len, msg, msg_size);
     else if (found == 1)
         snprintf(msg, (size_t)msg_size, "%.*s: expects %d argument%s, got %d", name_len, name,
                  arities[0], arities[0] == 1 ? "" : "s", n_args);

@@ -1,5 +1,6 @@
 /* Wavefront OBJ meshes: positions, normals and faces (shadecalc/mesh.h). */
 #include <ctype.h>
+#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,6 +9,7 @@
 
 #include "shadecalc/file.h"
 #include "shadecalc/mesh.h"
+#include "util/text.h"
 
 enum { MAX_ELEMENTS = INT_MAX / 8 };
 
@@ -44,19 +46,23 @@ typedef struct {
     array verts; /* corner_vertex */
     array tri;   /* int[3] */
     int with_normal, without_normal;
+    int not_content; /* the failure is no fault of the file's content (memory, reading) */
     char *err;
     size_t errsize;
 } obj_reader;
 
 static int fail(obj_reader *r, const char *what, const char *token, int len)
 {
-    snprintf(r->err, r->errsize, "%s:%d: %s '%.*s'", r->path, r->line, what, len, token);
+    char shown[96];
+    snprintf(r->err, r->errsize, "%s:%d: %s '%s'", r->path, r->line, what,
+             sc_escape_n(token, (size_t)len, shown, sizeof shown));
     return -1;
 }
 
 static int out_of_memory(obj_reader *r)
 {
     snprintf(r->err, r->errsize, "%s:%d: out of memory or too many elements", r->path, r->line);
+    r->not_content = 1;
     return -1;
 }
 
@@ -235,13 +241,16 @@ static int read_stream(obj_reader *r, FILE *f, sc_mesh *out)
     char *line = NULL;
     size_t cap = 0;
     int status = 0;
-    while (status == 0 && getline(&line, &cap, f) >= 0) {
+    ssize_t len;
+    while (status == 0 && (len = getline(&line, &cap, f)) >= 0) {
         r->line++;
-        status = read_line(r, line);
+        status = memchr(line, '\0', (size_t)len) ? fail(r, "a NUL byte in", line, (int)strlen(line))
+                                                  : read_line(r, line);
     }
     free(line);
     if (status == 0 && ferror(f)) {
-        snprintf(r->err, r->errsize, "%s: read error", r->path);
+        snprintf(r->err, r->errsize, "%s: %s", r->path, strerror(errno));
+        r->not_content = 1;
         status = -1;
     }
     if (status == 0 && r->tri.n == 0) {
@@ -253,20 +262,22 @@ static int read_stream(obj_reader *r, FILE *f, sc_mesh *out)
 
 int sc_obj_read(const char *path, sc_mesh *out, char *err, size_t errsize)
 {
-    obj_reader r = {.path = path, .err = err, .errsize = errsize};
-    FILE *f = fopen(path, "r");
+    int from_stdin = strcmp(path, "-") == 0;
+    obj_reader r = {.path = from_stdin ? "standard input" : path, .err = err, .errsize = errsize};
+    FILE *f = from_stdin ? stdin : fopen(path, "r");
     if (f == NULL) {
-        snprintf(err, errsize, "%s: cannot open", path);
-        return -1;
+        snprintf(err, errsize, "%s: cannot open: %s", path, strerror(errno));
+        return -2;
     }
     int status = read_stream(&r, f, out);
-    fclose(f);
+    if (!from_stdin)
+        fclose(f);
     free(r.v.data);
     free(r.vn.data);
     free(r.first.data);
     free(r.verts.data);
     free(r.tri.data);
-    return status;
+    return status < 0 && r.not_content ? -2 : status;
 }
 
 /* ---- writing ---- */

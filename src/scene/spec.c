@@ -9,7 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { MAX_ITEM = 256 };
+#include "util/text.h"
+
+enum { MAX_ITEM = 256, MAX_WRITES = 40, SHOWN = 80 };
 
 typedef enum { V_NUMBER, V_COLOUR, V_VECTOR, V_ENUM, V_FLAG } value_kind;
 
@@ -120,9 +122,12 @@ static int store(const key_def *k, void *target, const char *value, const char *
     }
     if (ok)
         return 0;
-    char words[160];
-    return fail(err, size, "%s: %s=%s: expected %s", what, k->key, value,
-                k->kind == V_ENUM ? word_list(k->names, words, sizeof words) : k->help);
+    char words[160], shown[SHOWN];
+    const char *near = k->kind == V_ENUM ? sc_suggest_among(value, k->names) : NULL;
+    return fail(err, size, "%s: %s=%s: expected %s%s%s%s", what, k->key,
+                sc_escape(value, shown, sizeof shown),
+                k->kind == V_ENUM ? word_list(k->names, words, sizeof words) : k->help,
+                near ? " (did you mean '" : "", near ? near : "", near ? "'?)" : "");
 }
 
 /* ---- items ---- */
@@ -153,8 +158,10 @@ static int for_each_item(const char *rest, const char *what, char *err, size_t s
             return 0;
         size_t len = strcspn(p, " \t");
         item it;
+        char shown[SHOWN];
         if (split_item(p, len, &it) < 0)
-            return fail(err, size, "%s: '%.*s': expected key=value", what, (int)(len > 40 ? 40 : len), p);
+            return fail(err, size, "%s: '%s': expected key=value", what,
+                        sc_escape_n(p, len, shown, sizeof shown));
         if (apply(ctx, &it) < 0)
             return -1;
         p += len;
@@ -180,6 +187,126 @@ static const key_def *find_key(const key_def *keys, const char *key)
         if (strcmp(keys->key, key) == 0)
             return keys;
     return NULL;
+}
+
+/* Another name a user may reach for, and the key it means. */
+static const struct {
+    const char *alias, *key;
+} synonyms[] = {
+    {"shininess", "m"}, {"exponent", "m"},   {"exponent", "exp"},     {"roughness", "alpha"},
+    {"intensity", "I"}, {"position", "pos"}, {"direction", "dir"},    {"attenuation", "atten"},
+    {"color", "diff"},  {"colour", "diff"},  {"ambient", "amb"},      {"specular", "spec"},
+    {"diffuse", "diff"}, {"falloff", "exp"}, {"fresnel", "F"},        {"ndf", "D"},
+};
+
+/* The key of `keys` (one that `kind` accepts) closest to the unknown `key`, by name or by a
+ * synonym's name, or NULL. */
+static const char *closest_key(const key_def *keys, unsigned kind, const char *key)
+{
+    enum { N_SYNONYMS = sizeof synonyms / sizeof synonyms[0] };
+    const char *meaning[N_SYNONYMS] = {NULL};
+    sc_suggestion s;
+    sc_suggest_init(&s, key);
+    for (size_t i = 0; i < N_SYNONYMS; i++) {
+        const key_def *k = find_key(keys, synonyms[i].key);
+        if (k && (k->kinds & kind) && strcmp(key, synonyms[i].alias) == 0)
+            return k->key;
+        if (k && (k->kinds & kind)) {
+            meaning[i] = k->key;
+            sc_suggest_consider(&s, synonyms[i].alias);
+        }
+    }
+    for (const key_def *k = keys; k->key; k++)
+        if (k->kinds & kind)
+            sc_suggest_consider(&s, k->key);
+    const char *best = sc_suggest_best(&s);
+    for (size_t i = 0; best && i < N_SYNONYMS; i++)
+        if (best == synonyms[i].alias && meaning[i])
+            return meaning[i];
+    return best;
+}
+
+/* "unknown key 'K'" with what it may have meant; -1. */
+static int fail_key(char *err, size_t size, const char *what, const key_def *keys, unsigned kind,
+                    const char *key)
+{
+    char shown[SHOWN];
+    const key_def *other = find_key(keys, key);
+    const char *near = other ? NULL : closest_key(keys, kind, key);
+    if (other)
+        return fail(err, size, "%s: unknown key '%s' (a key of other kinds)", what, key);
+    return fail(err, size, "%s: unknown key '%s'%s%s%s", what, sc_escape(key, shown, sizeof shown),
+                near ? " (did you mean '" : "", near ? near : "", near ? "='?)" : "");
+}
+
+/* "unknown kind 'K' (a|b|c)" with the closest kind first; -1. */
+static int fail_kind(char *err, size_t size, const char *what, const char *const *kinds,
+                     const char *kind)
+{
+    char shown[SHOWN], words[160];
+    const char *near = sc_suggest_among(kind, kinds);
+    return fail(err, size, "%s: unknown kind '%s' (%s%s%s%s)", what,
+                sc_escape(kind, shown, sizeof shown), near ? "did you mean '" : "",
+                near ? near : "", near ? "'? " : "", word_list(kinds, words, sizeof words));
+}
+
+/* The fields a spec has set, to refuse a second value for one (`m=32 m=64`, `alpha=` with
+ * `ay=`, `inner=` with `theta=`). */
+typedef struct {
+    struct {
+        size_t offset;
+        const char *key;
+    } w[MAX_WRITES];
+    int n;
+} write_log;
+
+/* Records that `key` sets the field at `offset`; -1 with the message if one already was. */
+static int log_write(write_log *log, size_t offset, const char *key, const char *what, char *err,
+                     size_t size)
+{
+    for (int i = 0; i < log->n; i++) {
+        if (log->w[i].offset != offset)
+            continue;
+        if (strcmp(log->w[i].key, key) == 0)
+            return fail(err, size, "%s: %s= is given twice", what, key);
+        return fail(err, size, "%s: %s= contradicts %s= (both set the same parameter)", what, key,
+                    log->w[i].key);
+    }
+    if (log->n < MAX_WRITES) {
+        log->w[log->n].offset = offset;
+        log->w[log->n++].key = key;
+    }
+    return 0;
+}
+
+/* A key that has an effect only for some values of another (sc= only with atten=clq). */
+typedef struct {
+    const char *key;
+    size_t selector;      /* offset of the int field that decides */
+    unsigned values;      /* bit v: the key has an effect when that field is v */
+    const char *selector_key;
+    const char *const *names; /* the selector's values, index = value */
+} key_need;
+
+/* Appends "K= has no effect with S=V" to warn for each key of the log that `needs` says the
+ * spec's choices ignore; 1 if any, else 0. */
+static int ignored_keys(const write_log *log, const key_need *needs, size_t n_needs,
+                        const void *target, const char *what, char *warn, size_t size)
+{
+    int any = 0;
+    for (int i = 0; i < log->n; i++)
+        for (size_t j = 0; j < n_needs; j++) {
+            const key_need *k = &needs[j];
+            int value;
+            memcpy(&value, (const char *)target + k->selector, sizeof value);
+            if (strcmp(k->key, log->w[i].key) != 0 || (k->values >> value & 1u))
+                continue;
+            size_t len = strlen(warn);
+            snprintf(warn + len, size - len, "%s%s: %s= has no effect with %s=%s", any ? "; " : "",
+                     what, k->key, k->selector_key, k->names[value]);
+            any = 1;
+        }
+    return any;
 }
 
 /* ---- lights ---- */
@@ -223,22 +350,53 @@ static const key_def light_keys[] = {
 };
 /* clang-format on */
 
+static const char *const flag_names[] = {"0", "1", NULL};
+enum { CLQ = 1u << SC_ATTEN_CLQ, WIN = 1u << SC_ATTEN_WINDOW, PIX = 1u << SC_ATTEN_PIXAR,
+       WDW = 1u << SC_ATTEN_WINDOWED, GL = 1u << SC_SPOT_OPENGL, DX = 1u << SC_SPOT_DIRECTX,
+       SMOOTH = 1u << SC_SPOT_SMOOTHSTEP };
+static const key_need light_needs[] = {
+    {"sc", L(atten.kind), CLQ, "atten", atten_names},
+    {"sl", L(atten.kind), CLQ, "atten", atten_names},
+    {"sq", L(atten.kind), CLQ, "atten", atten_names},
+    {"rstart", L(atten.kind), WIN, "atten", atten_names},
+    {"rend", L(atten.kind), WIN, "atten", atten_names},
+    {"fmax", L(atten.kind), PIX, "atten", atten_names},
+    {"fc", L(atten.kind), PIX, "atten", atten_names},
+    {"rc", L(atten.kind), PIX, "atten", atten_names},
+    {"se", L(atten.kind), PIX, "atten", atten_names},
+    {"rmax", L(atten.kind), WDW, "atten", atten_names},
+    {"cutoff", L(spot.kind), GL, "spot", spot_names},
+    {"exp", L(spot.kind), GL | DX, "spot", spot_names},
+    {"inner", L(spot.kind), DX | SMOOTH, "spot", spot_names},
+    {"outer", L(spot.kind), DX | SMOOTH, "spot", spot_names},
+    {"theta", L(spot.kind), DX | SMOOTH, "spot", spot_names},
+    {"phi", L(spot.kind), DX | SMOOTH, "spot", spot_names},
+};
+
 typedef struct {
     sc_light *light;
     char what[40];
     unsigned seen_pos, seen_dir;
+    write_log log;
     char *err;
     size_t size;
 } light_ctx;
 
+static int is_negative(const double c[3]) { return c[0] < 0 || c[1] < 0 || c[2] < 0; }
+
 static int apply_light_item(void *vctx, const item *it)
 {
     light_ctx *c = vctx;
+    unsigned kind = 1u << c->light->kind;
     const key_def *k = find_key(light_keys, it->key);
-    if (!k || !(k->kinds & (1u << c->light->kind)))
-        return fail(c->err, c->size, "%s: unknown key '%s'", c->what, it->key);
-    if (store(k, c->light, it->value, c->what, c->err, c->size) < 0)
+    if (!k || !(k->kinds & kind))
+        return fail_key(c->err, c->size, c->what, light_keys, kind, it->key);
+    if (log_write(&c->log, k->offset, k->key, c->what, c->err, c->size) < 0 ||
+        store(k, c->light, it->value, c->what, c->err, c->size) < 0)
         return -1;
+    if (k->kind == V_COLOUR && is_negative((const double *)((char *)c->light + k->offset)))
+        return fail(c->err, c->size, "%s: %s=%s: must not be negative", c->what, k->key,
+                    it->value);
     c->seen_pos |= k->offset == L(pos);
     c->seen_dir |= k->offset == L(dir);
     if (strcmp(k->key, "theta") == 0) /* Direct3D 9 full cone angles: halved */
@@ -250,13 +408,12 @@ static int apply_light_item(void *vctx, const item *it)
 
 int sc_light_parse(const char *spec, sc_light *out, char *err, size_t size)
 {
-    char kind[32], words[64];
+    char kind[32];
     const char *rest = NULL;
     int has_kind = kind_word(spec, kind, sizeof kind, &rest) == 0;
     int k = has_kind ? word_index(light_kinds, kind) : -1;
     if (k < 0)
-        return fail(err, size, "light: unknown kind '%s' (%s)", has_kind ? kind : "",
-                    word_list(light_kinds, words, sizeof words));
+        return fail_kind(err, size, "light", light_kinds, has_kind ? kind : "");
     sc_light_init(out, (sc_light_kind)k);
     light_ctx c = {.light = out, .err = err, .size = size};
     snprintf(c.what, sizeof c.what, "light %s", kind);
@@ -269,7 +426,9 @@ int sc_light_parse(const char *spec, sc_light *out, char *err, size_t size)
     char msg[160];
     if (sc_light_validate(out, msg, sizeof msg) < 0)
         return fail(err, size, "%s: %s", c.what, msg);
-    return 0;
+    err[0] = '\0';
+    return ignored_keys(&c.log, light_needs, sizeof light_needs / sizeof light_needs[0], out,
+                        c.what, err, size);
 }
 
 /* ---- models ---- */
@@ -313,10 +472,18 @@ static const key_def model_keys[] = {
 
 static const char *const ads_forms[] = {"lambert", "phong", "blinn-phong", NULL};
 
+enum { SCHLICK = 1u << 0, EXACT = 1u << 1, NOT_LOCAL = 1u << 0 };
+static const key_need model_needs[] = {
+    {"f0", M(brdf.F), SCHLICK, "F", f_names},
+    {"ior", M(brdf.F), EXACT, "F", f_names},
+    {"viewer", M(local_viewer), NOT_LOCAL, "local-viewer", flag_names},
+};
+
 typedef struct {
     sc_model *model;
     int kind; /* index in model_kinds */
     char what[40];
+    write_log log;
     char *err;
     size_t size;
 } model_ctx;
@@ -324,7 +491,10 @@ typedef struct {
 /* form= : the model's own variant names (sc_brdf_form_name), or the ADS forms. */
 static int apply_form(model_ctx *c, const char *value)
 {
-    char words[96] = "";
+    char words[96] = "", shown[SHOWN];
+    if (log_write(&c->log, M(brdf.form), "form", c->what, c->err, c->size) < 0)
+        return -1;
+    value = sc_escape(value, shown, sizeof shown);
     if (c->kind == 6) {
         int i = word_index(ads_forms, value);
         if (i < 0)
@@ -351,10 +521,14 @@ static int apply_model_item(void *vctx, const item *it)
     model_ctx *c = vctx;
     if (strcmp(it->key, "form") == 0)
         return apply_form(c, it->value);
+    unsigned kind = 1u << c->kind;
     const key_def *k = find_key(model_keys, it->key);
-    if (!k || !(k->kinds & (1u << c->kind)))
-        return fail(c->err, c->size, "%s: unknown key '%s'", c->what, it->key);
-    if (store(k, c->model, it->value, c->what, c->err, c->size) < 0)
+    if (!k || !(k->kinds & kind))
+        return fail_key(c->err, c->size, c->what, model_keys, kind, it->key);
+    int sets_ay = strcmp(k->key, "alpha") == 0 || strcmp(k->key, "perceptual") == 0;
+    if (log_write(&c->log, k->offset, k->key, c->what, c->err, c->size) < 0 ||
+        (sets_ay && log_write(&c->log, M(brdf.ay), k->key, c->what, c->err, c->size) < 0) ||
+        store(k, c->model, it->value, c->what, c->err, c->size) < 0)
         return -1;
     sc_brdf *b = &c->model->brdf;
     if (strcmp(k->key, "alpha") == 0)
@@ -376,13 +550,12 @@ static void init_model(sc_model *m, int kind)
 
 int sc_model_parse(const char *spec, sc_model *out, char *err, size_t size)
 {
-    char kind[32], words[160];
+    char kind[32];
     const char *rest = NULL;
     int has_kind = kind_word(spec, kind, sizeof kind, &rest) == 0;
     int k = has_kind ? word_index(model_kinds, kind) : -1;
     if (k < 0)
-        return fail(err, size, "brdf: unknown kind '%s' (%s)", has_kind ? kind : "",
-                    word_list(model_kinds, words, sizeof words));
+        return fail_kind(err, size, "brdf", model_kinds, has_kind ? kind : "");
     init_model(out, k);
     model_ctx c = {.model = out, .kind = k, .err = err, .size = size};
     snprintf(c.what, sizeof c.what, "brdf %s", kind);
@@ -391,5 +564,7 @@ int sc_model_parse(const char *spec, sc_model *out, char *err, size_t size)
     char msg[160];
     if (sc_brdf_validate(&out->brdf, msg, sizeof msg) < 0)
         return fail(err, size, "%s: %s", c.what, msg);
-    return 0;
+    err[0] = '\0';
+    return ignored_keys(&c.log, model_needs, sizeof model_needs / sizeof model_needs[0], out,
+                        c.what, err, size);
 }

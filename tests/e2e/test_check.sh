@@ -12,5 +12,5 @@ expect "no brdf"                    2 '' "error: check: no --brdf SPEC given (se
 expect "legacy model"               2 '' "error: check: 'opengl' is a legacy shading model, not a BRDF" -- check --brdf opengl
 expect "bad theta"                  2 '' 'error: check: --theta 0,95: expected up to 64 angles in [0, 90) separated by commas' -- check --brdf lambert --theta 0,95
 expect "bad order"                  2 '' 'error: check: --order 1: expected an integer 2..32' -- check --brdf lambert --order 1
-expect "bad spec"                   2 '' "error: brdf ward: unknown key 'm'" -- check --brdf 'ward m=3'
+expect "bad spec"                   2 '' "error: brdf ward: unknown key 'm' (a key of other kinds)" -- check --brdf 'ward m=3'
 expect "help"                       0 '~usage: shadecalc check' '' -- check --help

@@ -32,16 +32,16 @@ expect "ulp mediump"              0 '1258  # ulp: 2.69' '' -- eval -p mediump --
 expect "json"                     0 '{"expression": "mat2(1,2,3,4) * vec2(1,1)", "precision": "highp", "type": "vec2", "value": [4, 6]}' '' -- eval --format json 'mat2(1,2,3,4) * vec2(1,1)'
 expect "json nan as string"       0 '{"expression": "log(-1.0)", "precision": "highp", "type": "float", "value": "nan"}' '*' -- eval -f json 'log(-1.0)'
 expect "json escapes"             0 '{"expression": "1.0\t+ 1.0", "precision": "highp", "type": "float", "value": 2}' '' -- eval -f json "$(printf '1.0\t+ 1.0')"
-expect "csv one type"             0 'x,y,z
-0.6,0,0.8
-1,1,1' '' -- eval --format csv 'normalize(vec3(3,0,4))' 'vec3(1)'
-expect "csv mixed types"          0 'type,c0,c1,c2
-float,1,,
-vec3,1,2,3' '' -- eval -f csv '1.0' 'vec3(1,2,3)'
-expect "csv ulp columns"          0 'value,value_ulp
-0.5,0' '' -- eval -f csv --ulp '0.5'
-expect "csv matrix columns"       0 'c0r0,c0r1,c1r0,c1r1
-1,2,3,4' '' -- eval -f csv 'mat2(1,2,3,4)'
+expect "csv one type"             0 'expression,x,y,z
+"normalize(vec3(3,0,4))",0.6,0,0.8
+vec3(1),1,1,1' '' -- eval --format csv 'normalize(vec3(3,0,4))' 'vec3(1)'
+expect "csv mixed types"          0 'expression,type,c0,c1,c2
+1.0,float,1,,
+"vec3(1,2,3)",vec3,1,2,3' '' -- eval -f csv '1.0' 'vec3(1,2,3)'
+expect "csv ulp columns"          0 'expression,value,value_ulp
+0.5,0.5,0' '' -- eval -f csv --ulp '0.5'
+expect "csv matrix columns"       0 'expression,c0r0,c0r1,c1r0,c1r1
+"mat2(1,2,3,4)",1,2,3,4' '' -- eval -f csv 'mat2(1,2,3,4)'
 expect_stdin "stdin expressions" '1.0 + 1.0
 # a comment
 
@@ -65,6 +65,6 @@ expect "second expression error"  2 '' "error: expression 2: column 1: unknown f
 expect "bad define"               2 '' "error: eval: -D 'x': expected NAME=EXPR" -- eval -D x '1'
 expect "define error"             2 '' "error: -D 'y': column 8: operator '+': operands vec2 and vec3 do not match" -- eval -D 'y=vec2(1)+vec3(1)' '1'
 expect "bad precision"            2 '' "error: eval: unknown precision 'half' (double, highp, mediump, lowp)" -- eval -p half '1'
-expect "bad format"               2 '' "error: eval: unknown format 'xml' (glsl, csv, json)" -- eval -f xml '1'
-expect "unknown option"           2 '' "~option '--frob' is unknown" -- eval --frob '1'
+expect "bad format"               2 '' "error: eval: unknown format 'xml' (glsl, csv, jsonl)" -- eval -f xml '1'
+expect "unknown option"           2 '' "~unknown option '--frob'" -- eval --frob '1'
 expect "help"                     0 '~usage: shadecalc eval' '' -- eval --help

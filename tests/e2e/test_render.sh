@@ -65,7 +65,7 @@ expect "missing mesh file"       1 '' '~nonexistent.obj' -- render --mesh "$e2e_
 check  "nothing written on error" test ! -e "$imgdir/x.exr"
 expect "missing directory"       1 '' "~$e2e_tmp/none/a.exr" -- render --size 8x8 -o "$e2e_tmp/none/a.exr"
 check  "no temporary left"       test -z "$(ls -A "$imgdir" | grep -v -e '^sphere.exr$' -e '^torus.exr$' -e '^cyl.exr$' -e '^exact.exr$' -e '^octa.exr$')"
-expect "compare missing dir"     1 '' "~$e2e_tmp/none/render-gouraud-1024.exr" -- render --compare --size 8x8 --output-dir "$e2e_tmp/none"
+expect "compare dir not creatable" 1 '' "error: render: --output-dir $e2e_tmp/octa.obj: not a directory" -- render --compare --size 8x8 --output-dir "$e2e_tmp/octa.obj/sub"
 expect "compare fixes its plan"  2 '' 'error: render: --compare renders its own plan (Gouraud at 1024, 6320, 40000 triangles, Phong at 6320, exact): --shading does not apply' -- render --compare --shading phong
 expect "compare fixes triangles" 2 '' 'error: render: --compare renders its own plan (Gouraud at 1024, 6320, 40000 triangles, Phong at 6320, exact): --triangles does not apply' -- render --compare --triangles 100
 expect "isa scalar"              0 '' '' -- render --size 16x16 --isa scalar -o "$imgdir/isa.exr"

@@ -34,7 +34,7 @@ expect "fc > fmax"               2 '' 'error: light point: fc=2 fmax=1: pixar ne
 expect "missing pos"             2 '' 'error: light point: missing pos=X,Y,Z' -- shade --light point
 expect "unknown light kind"      2 '' "error: light: unknown kind 'lamp' (directional|point|spot)" -- shade --light 'lamp pos=1,2,3'
 expect "unknown key"             2 '' "error: light point: unknown key 'foo'" -- shade --light 'point pos=1,2,3 foo=1'
-expect "key of another kind"     2 '' "error: light point: unknown key 'cutoff'" -- shade --light 'point pos=1,2,3 cutoff=10'
+expect "key of another kind"     2 '' "error: light point: unknown key 'cutoff' (a key of other kinds)" -- shade --light 'point pos=1,2,3 cutoff=10'
 expect "not key=value"           2 '' "error: light point: 'pos': expected key=value" -- shade --light 'point pos'
 expect "zero direction"          2 '' 'error: light directional: dir must not be the zero vector' -- shade --light 'directional dir=0,0,0'
 expect "negative roughness"      2 '' 'error: brdf cook-torrance: alpha=-0.1: must be >= 0 and finite' -- shade --light 'directional dir=0,0,1' --brdf 'cook-torrance alpha=-0.1'

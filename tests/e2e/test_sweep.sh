@@ -14,8 +14,8 @@ expect "first variable fastest" 0 'a,b,value
 2,10,12
 1,20,21
 2,20,22' '' -- sweep --var a=1,2 --var b=10,20 'a + b'
-expect "vector columns" 0 '~x,result_x,y,z' '' -- sweep --var x=1,2 'vec3(x, 2.0, 3.0)'
-expect "shading columns" 0 '~r,result_r,g,b' '' -- sweep --var r=1 --light 'point pos=0,0,$r'
+expect "vector columns" 0 '~x,result_x,result_y,result_z' '' -- sweep --var x=1,2 'vec3(x, 2.0, 3.0)'
+expect "shading columns" 0 '~r,result_r,result_g,result_b' '' -- sweep --var r=1 --light 'point pos=0,0,$r'
 expect "tsv" 0 'x	value
 2	4' '' -- sweep -f tsv --var x=2 'x * x'
 expect "log spacing" 0 'm,value
@@ -23,12 +23,12 @@ expect "log spacing" 0 'm,value
 10,10
 100,100
 1000,1000' '' -- sweep --var m=1:1000:4 --log 'm'
-expect "log of one variable" 0 '~10,0.5' '' -- sweep --var m=1:100:3 --var t=0,0.5 --log=m 't'
+expect "log of one variable" 0 '~10,0.5' '' -- sweep --var m=1:100:3 --var t=0,0.5 --log=m 'm*t'
 sweep -f jsonl --var x=0:1:5 'vec2(x, 1.0 / x)' >"$e2e_tmp/rows.jsonl"
 verdict "jsonl is JSON" python3 -c '
 import json, sys
 rows = [json.loads(line) for line in open(sys.argv[1])]
-assert len(rows) == 5 and rows[0]["y"] == "inf" and rows[4]["result_x"] == 1, rows' \
+assert len(rows) == 5 and rows[0]["result_y"] == "inf" and rows[4]["result_x"] == 1, rows' \
     "$e2e_tmp/rows.jsonl"
 
 # every row against `shadecalc eval` of the same expression with the value written in

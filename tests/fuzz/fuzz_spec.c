@@ -19,8 +19,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char err[256];
     sc_light light;
     sc_model model;
-    int light_ok = sc_light_parse(spec, &light, err, sizeof err) == 0;
-    int model_ok = sc_model_parse(spec, &model, err, sizeof err) == 0;
+    int light_ok = sc_light_parse(spec, &light, err, sizeof err) >= 0;
+    int model_ok = sc_model_parse(spec, &model, err, sizeof err) >= 0;
     if (light_ok || model_ok) {
         if (!light_ok)
             sc_light_init(&light, SC_LIGHT_DIRECTIONAL);
