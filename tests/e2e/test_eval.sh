@@ -68,3 +68,19 @@ expect "bad precision"            2 '' "error: eval: unknown precision 'half' (d
 expect "bad format"               2 '' "error: eval: unknown format 'xml' (glsl, csv, json)" -- eval -f xml '1'
 expect "unknown option"           2 '' "~option '--frob' is unknown" -- eval --frob '1'
 expect "help"                     0 '~usage: shadecalc eval' '' -- eval --help
+
+# long flat expressions: evaluated without recursion (a chain is as deep as it is long)
+chain4000=$(awk 'BEGIN { s = "1"; for (i = 1; i < 4000; i++) s = s "+1"; print s }')
+expect "4000-term chain"          0 '4000' '' -- eval "$chain4000"
+expect "4000-term chain in -D"    0 '4001' '' -- eval -D "x=$chain4000" 'x + 1'
+expect_stdin "4000-term chain on stdin" "$chain4000" 0 '4000' '' -- eval
+expect "4000-term chain in sweep" 0 'x,value
+1,4001
+2,4002' '' -- sweep --var x=1,2 "x + $chain4000"
+# one argument is at most 128 KiB (Linux MAX_ARG_STRLEN): 60 000 terms, 120 KB
+chain60k=$(awk 'BEGIN { s = "1"; for (i = 1; i < 60000; i++) s = s "+1"; print s }')
+expect "60000-term chain"         0 '60000' '' -- eval "$chain60k"
+# ~1 MB on standard input; alternating signs keep every partial sum exact in highp
+expect_stdin "1 MB chain on stdin" "$(awk 'BEGIN { for (i = 0; i < 250000; i++) printf "+1-1"; print "+7" }')" 0 '7' '' -- eval
+nest=$(awk 'BEGIN { for (i = 0; i < 300; i++) printf "-("; printf "1"; for (i = 0; i < 300; i++) printf ")" }')
+expect "deep nesting names the limit" 2 '' '~expression nested too deeply (more than 256 levels of parentheses, calls and unary operators)' -- eval -- "$nest"
