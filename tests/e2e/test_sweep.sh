@@ -3,12 +3,6 @@
 # presets, atomic files, a closed pipe, and the errors.
 . tests/e2e/lib.sh
 
-# verdict NAME CONDITION...: a pass or a fail for a shell test
-verdict() {
-    name=$1; shift
-    if "$@"; then echo "ok   $name"; echo pass >>"$E2E_COUNTS"
-    else echo "FAIL $name: $*"; echo fail >>"$E2E_COUNTS"; fi
-}
 sweep() { "$SHADECALC" sweep "$@" 2>"$e2e_tmp/err"; }
 
 expect "header and rows" 0 'x,value
