@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/line_reader.h"
 
 void setup_init(shade_setup *s)
 {
@@ -80,6 +81,10 @@ static int apply_line(shade_setup *s, char *line, const char *where)
     return setup_set_value(s, word, rest, where);
 }
 
+/* Scene files are small: a bound on what is read keeps /dev/zero or an endless stream from
+ * filling memory or running forever. */
+enum { SCENE_MAX_LINE = 64 * 1024, SCENE_MAX_SIZE = 16 * 1024 * 1024 };
+
 int setup_load_file(shade_setup *s, const char *path)
 {
     FILE *f = fopen(path, "r");
@@ -87,23 +92,24 @@ int setup_load_file(shade_setup *s, const char *path)
         sc_error("%s: %s", path, strerror(errno));
         return SC_EXIT_RUNTIME;
     }
-    char *line = NULL, where[512];
-    size_t cap = 0;
-    int status = SC_EXIT_OK, number = 0;
-    while (status == SC_EXIT_OK && getline(&line, &cap, f) >= 0) {
-        number++;
-        line[strcspn(line, "\r\n")] = '\0';
-        char *text = line + strspn(line, " \t");
-        if (*text == '\0' || *text == '#')
-            continue;
-        snprintf(where, sizeof where, "%s:%d: ", path, number);
-        status = apply_line(s, text, where);
+    line_reader r;
+    if (line_reader_init(&r, f, SCENE_MAX_LINE, SCENE_MAX_SIZE) < 0) {
+        fclose(f);
+        sc_error("%s: out of memory", path);
+        return SC_EXIT_RUNTIME;
     }
-    if (status == SC_EXIT_OK && ferror(f)) {
-        sc_error("%s: read error", path);
-        status = SC_EXIT_RUNTIME;
+    char where[512];
+    int status = SC_EXIT_OK;
+    line_status ls;
+    while (status == SC_EXIT_OK && (ls = line_reader_next(&r)) != LINE_END) {
+        snprintf(where, sizeof where, "%s:%ld: ", path, r.number);
+        char *text = r.line + strspn(r.line, " \t");
+        if (ls != LINE_OK)
+            status = line_reader_report(&r, ls, path, where);
+        else if (*text != '\0' && *text != '#')
+            status = apply_line(s, text, where);
     }
-    free(line);
+    line_reader_free(&r);
     fclose(f);
     return status;
 }
