@@ -2,8 +2,11 @@
 #include <getopt.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/line_reader.h"
 #include "shadecalc/expr.h"
 
 enum { FMT_GLSL, FMT_CSV, FMT_JSON };
@@ -294,37 +297,24 @@ static void print_csv(FILE *out, const char *src, const sc_value *v, const sc_va
     fputc('\n', out);
 }
 
+/* One result line in the chosen format (csv: `mixed` and `width` as the header's). */
+static void print_result(const char *src, const sc_value *v, const sc_value *ref,
+                         const eval_options *o, int mixed, int width)
+{
+    if (o->format == FMT_GLSL)
+        print_glsl(stdout, v, ref, o);
+    else if (o->format == FMT_JSON)
+        print_json(stdout, src, v, ref, o);
+    else
+        print_csv(stdout, src, v, ref, o, mixed, width);
+}
+
 /* ---- the command ---- */
 
 typedef struct {
     char **src;
     int count;
-    char **owned; /* lines read from standard input */
 } expression_list;
-
-static int read_stdin_expressions(expression_list *list)
-{
-    char *line = NULL;
-    size_t cap = 0;
-    ssize_t len;
-    while ((len = getline(&line, &cap, stdin)) >= 0) {
-        while (len > 0 && (line[len - 1] == '\n' || line[len - 1] == '\r'))
-            line[--len] = '\0';
-        if (len == 0 || line[strspn(line, " \t")] == '#' || line[strspn(line, " \t")] == '\0')
-            continue;
-        char **grown = realloc(list->owned, (size_t)(list->count + 1) * sizeof *grown);
-        if (!grown) {
-            free(line);
-            return -1;
-        }
-        list->owned = list->src = grown;
-        list->owned[list->count++] = line;
-        line = NULL;
-        cap = 0;
-    }
-    free(line);
-    return 0;
-}
 
 /* glsl, csv, or jsonl (JSON Lines; "json" names the same, as sweep and bench accept both). */
 static int parse_format(const char *arg, int *format)
@@ -382,6 +372,7 @@ static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
     return SC_EXIT_OK;
 }
 
+/* Expressions given as arguments: all compiled (and the csv header chosen) before any output. */
 static int run_list(const expression_list *list, const define_set *d, const eval_options *o)
 {
     sc_expr **progs = calloc((size_t)list->count + 1, sizeof *progs);
@@ -408,17 +399,96 @@ static int run_list(const expression_list *list, const define_set *d, const eval
         status = evaluate(progs[i], d, o, where, &v, &ref);
         if (status != SC_EXIT_OK)
             break;
-        if (o->format == FMT_GLSL)
-            print_glsl(stdout, &v, &ref, o);
-        else if (o->format == FMT_JSON)
-            print_json(stdout, list->src[i], &v, &ref, o);
-        else
-            print_csv(stdout, list->src[i], &v, &ref, o, mixed, width);
+        print_result(list->src[i], &v, &ref, o, mixed, width);
     }
     for (int i = 0; progs && i < list->count; i++)
         sc_expr_free(progs[i]);
     free(progs);
     free(types);
+    return status;
+}
+
+/* ---- standard input, streamed ---- */
+
+/* csv from standard input: the header is the first result's type, and later lines must have
+ * it too (the input is not held to look ahead). */
+typedef struct {
+    int printed;
+    sc_type type;
+} csv_header;
+
+/* One line of standard input: compiled, evaluated and printed. Status as the command's. */
+static int run_line(const char *src, const char *where, const define_set *d,
+                    const eval_options *o, csv_header *header)
+{
+    sc_expr *e = compile(src, d, where);
+    if (!e)
+        return SC_EXIT_USAGE;
+    sc_type t = sc_expr_result_type(e);
+    sc_value v, ref;
+    int status = SC_EXIT_OK;
+    if (o->format == FMT_CSV && header->printed && t != header->type) {
+        sc_error("%sa %s in csv under the header of a %s (the first line's type): give "
+                 "expressions of one type, or several as arguments",
+                 where, sc_type_name(t), sc_type_name(header->type));
+        status = SC_EXIT_USAGE;
+    } else {
+        status = evaluate(e, d, o, where, &v, &ref);
+    }
+    if (status == SC_EXIT_OK && o->format == FMT_CSV && !header->printed) {
+        print_csv_header(stdout, &t, 1, o);
+        *header = (csv_header){1, t};
+    }
+    if (status == SC_EXIT_OK)
+        print_result(src, &v, &ref, o, 0, sc_type_size(t));
+    sc_expr_free(e);
+    return status;
+}
+
+/* Results reach a reader on a pipe or a terminal line by line, not when a buffer fills. */
+static void flush_lines_if_interactive(void)
+{
+    struct stat st;
+    if (isatty(STDOUT_FILENO) ||
+        (fstat(STDOUT_FILENO, &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode))))
+        setvbuf(stdout, NULL, _IOLBF, 0);
+}
+
+/* The worse of two statuses: a bad line (USAGE) over a failed evaluation (RUNTIME). */
+static int worse(int a, int b) { return a > b ? a : b; }
+
+/* Expressions from standard input, one per line, each printed when computed: a bad line is
+ * reported with its number and the rest go on. Constant memory: one line at a time, of at most
+ * MAX_LINE bytes (a longer line stops the reading). */
+static int run_stdin(const define_set *d, const eval_options *o)
+{
+    enum { MAX_LINE = 1 << 20 };
+    line_reader r;
+    if (line_reader_init(&r, stdin, MAX_LINE, 0) < 0) {
+        sc_error("eval: out of memory");
+        return SC_EXIT_RUNTIME;
+    }
+    flush_lines_if_interactive();
+    csv_header header = {0, SC_FLOAT};
+    int status = SC_EXIT_OK;
+    line_status ls;
+    while ((ls = line_reader_next(&r)) != LINE_END) {
+        char where[32];
+        snprintf(where, sizeof where, "line %ld: ", r.number);
+        const char *text = r.line + strspn(r.line, " \t");
+        if (ls != LINE_OK)
+            status = worse(status, line_reader_report(&r, ls, "eval: standard input", where));
+        else if (*text != '\0' && *text != '#')
+            status = worse(status, run_line(r.line, where, d, o, &header));
+        if (ls != LINE_OK && ls != LINE_HAS_NUL) /* the rest of the input is lost */
+            break;
+        if (ferror(stdout)) { /* nobody reads the results: stop, however long the input */
+            sc_error("eval: standard output: write error");
+            status = worse(status, SC_EXIT_RUNTIME);
+            break;
+        }
+    }
+    line_reader_free(&r);
     return status;
 }
 
@@ -429,17 +499,8 @@ static int run(int argc, char **argv)
     int status = parse_options(argc, argv, &o, &d);
     if (status != SC_EXIT_OK)
         return status < 0 ? SC_EXIT_OK : status;
-    expression_list list = {argv + optind, argc - optind, NULL};
-    if (list.count == 0 && read_stdin_expressions(&list) < 0) {
-        sc_error("eval: out of memory reading standard input");
-        status = SC_EXIT_RUNTIME;
-    }
-    if (status == SC_EXIT_OK)
-        status = run_list(&list, &d, &o);
-    for (int i = 0; list.owned && i < list.count; i++)
-        free(list.owned[i]);
-    free(list.owned);
-    return status;
+    expression_list list = {argv + optind, argc - optind};
+    return list.count ? run_list(&list, &d, &o) : run_stdin(&d, &o);
 }
 
 const sc_command sc_cmd_eval = {"eval", "evaluate GLSL ES expressions in a chosen precision", run};

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/line_reader.h"
 #include "util/text.h"
 
 static int is_zero(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
@@ -109,6 +110,10 @@ static char *line_text(char *line)
     return line + strspn(line, " \t");
 }
 
+/* Scene files are small: a bound on what is read keeps /dev/zero or an endless stream from
+ * filling memory or running forever. */
+enum { SCENE_MAX_LINE = 64 * 1024, SCENE_MAX_SIZE = 16 * 1024 * 1024 };
+
 int setup_load_file(shade_setup *s, const char *path)
 {
     int from_stdin = strcmp(path, "-") == 0;
@@ -118,27 +123,27 @@ int setup_load_file(shade_setup *s, const char *path)
         sc_error("%s: %s", path, strerror(errno));
         return SC_EXIT_RUNTIME;
     }
-    char *line = NULL, where[512];
-    size_t cap = 0;
-    int status = SC_EXIT_OK, number = 0;
-    ssize_t len;
-    while (status == SC_EXIT_OK && (len = getline(&line, &cap, f)) >= 0) {
-        number++;
-        snprintf(where, sizeof where, "%s:%d: ", name, number);
-        if (memchr(line, '\0', (size_t)len)) {
-            sc_error("%sa NUL byte in the line", where);
-            status = SC_EXIT_USAGE;
-            break;
+    line_reader r;
+    if (line_reader_init(&r, f, SCENE_MAX_LINE, SCENE_MAX_SIZE) < 0) {
+        if (!from_stdin)
+            fclose(f);
+        sc_error("%s: out of memory", name);
+        return SC_EXIT_RUNTIME;
+    }
+    char where[512];
+    int status = SC_EXIT_OK;
+    line_status ls;
+    while (status == SC_EXIT_OK && (ls = line_reader_next(&r)) != LINE_END) {
+        snprintf(where, sizeof where, "%s:%ld: ", name, r.number);
+        if (ls != LINE_OK) {
+            status = line_reader_report(&r, ls, name, where);
+            continue;
         }
-        char *text = line_text(line);
+        char *text = line_text(r.line);
         if (*text != '\0')
             status = apply_line(s, text, where);
     }
-    if (status == SC_EXIT_OK && ferror(f)) {
-        sc_error("%s: %s", name, strerror(errno));
-        status = SC_EXIT_RUNTIME;
-    }
-    free(line);
+    line_reader_free(&r);
     if (!from_stdin)
         fclose(f);
     return status;

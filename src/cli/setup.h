@@ -27,7 +27,8 @@ int setup_set_model(shade_setup *s, const char *spec, const char *where);
 int setup_set_value(shade_setup *s, const char *name, const char *value, const char *where);
 
 /* Reads a scene file: lines `light SPEC`, `brdf SPEC`, `ambient C`, `n|v|p|eye|tangent X,Y,Z`,
- * `#` comments. Exit status as above; RUNTIME if the file cannot be read. */
+ * `#` comments. Exit status as above; RUNTIME if the file cannot be read; USAGE for a line
+ * over 64 KiB, a NUL byte or a file over 16 MiB. */
 int setup_load_file(shade_setup *s, const char *path);
 
 /* The shading point: n, v (from --v or from --eye and --p) and the frame. USAGE on a zero

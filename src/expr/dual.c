@@ -1,5 +1,5 @@
 /* Forward-mode automatic differentiation of a compiled expression (shadecalc/expr.h,
- * sc_expr_eval_dual): the tree of eval.c walked with dual values (a value and SC_DUAL_DIRS
+ * sc_expr_eval_dual): the flat program of eval.c run with dual values (a value and SC_DUAL_DIRS
  * tangents). Values are computed exactly as sc_expr_eval in double precision; each node adds
  * its derivative rule. Linear nodes (+, −, negation, constructors, swizzles, indexing,
  * transpose) apply themselves to the tangents; bilinear ones (*, dot, cross, outerProduct,
@@ -11,14 +11,6 @@
 #include "expr/expr_internal.h"
 
 static const double PI = 3.14159265358979323846, LN2 = 0.69314718055994530942;
-
-typedef struct {
-    const sc_expr *e;
-    const sc_dual_value *inputs;
-    sc_dual_value *slots; /* the statements' values */
-    sc_dual_value *stack; /* the children's values of the nodes being evaluated */
-    int top;
-} dual_state;
 
 static sc_value zero_of(sc_type t)
 {
@@ -521,66 +513,39 @@ static sc_dual_value dual_select(const expr_node *n, const sc_dual_value *base)
     return out;
 }
 
-/* One node from its children's values. Kept out of dual_node (which recurses, as deep as a
- * chain of `+` is long) so that its temporaries are not part of every recursive frame. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void
-apply(const dual_state *st, const expr_node *n, const sc_dual_value *args, sc_dual_value *out)
+/* Node n from the values computed before it (its operands are values[n->base ...]). */
+static sc_dual_value dual_node(const sc_dual_value *inputs, const expr_node *n,
+                               const sc_dual_value *values)
 {
+    const sc_dual_value *args = values + n->base;
     switch (n->kind) {
-    case NODE_NUMBER: *out = constant((sc_value){SC_FLOAT, {n->num}}); break;
-    case NODE_INPUT: *out = st->inputs[n->op]; break;
-    case NODE_SLOT: *out = st->slots[n->op]; break;
-    case NODE_NEGATE: *out = negate(&args[0]); break;
-    case NODE_BINARY: *out = dual_binary(n->op, n->type, &args[0], &args[1]); break;
-    case NODE_CALL: *out = dual_builtin(n->op, args, n->count); break;
-    case NODE_CONSTRUCT: *out = dual_construct(n->type, args, n->count); break;
-    default: *out = dual_select(n, &args[0]); break;
+    case NODE_NUMBER: return constant((sc_value){SC_FLOAT, {n->num}});
+    case NODE_INPUT: return inputs[n->op];
+    case NODE_SLOT: return values[n->op];
+    case NODE_NEGATE: return negate(&args[0]);
+    case NODE_BINARY: return dual_binary(n->op, n->type, &args[0], &args[1]);
+    case NODE_CALL: return dual_builtin(n->op, args, n->count);
+    case NODE_CONSTRUCT: return dual_construct(n->type, args, n->count);
+    default: return dual_select(n, &args[0]);
     }
 }
 
-/* The children's values live on st->stack (one slot per child on the path from the root), so
- * a recursive frame holds a few pointers only. */
-static void dual_node(dual_state *st, int index, sc_dual_value *out)
-{
-    const expr_node *n = &st->e->nodes[index];
-    sc_dual_value *args = st->stack + st->top;
-    st->top += n->count;
-    for (int i = 0; i < n->count; i++)
-        dual_node(st, st->e->kids[n->first + i], &args[i]);
-    apply(st, n, args, out);
-    st->top -= n->count;
-}
-
-static int slot_count(const sc_expr *e)
-{
-    int n = 0;
-    for (int i = 0; i < e->n_stmts; i++)
-        n = e->stmts[i].slot >= n ? e->stmts[i].slot + 1 : n;
-    return n;
-}
-
-/* The value of e with its derivatives; NaN values and derivatives if out of memory. Slots and
- * the children's stack share one buffer: on the C stack for small expressions (the common
- * case, no allocation), else on the heap. */
+/* The value of e with its derivatives: one pass over the flat program (expr_internal.h); NaN
+ * values and derivatives if out of memory. The values are on the C stack for small
+ * expressions (the common case, no allocation), else on the heap. */
 sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs)
 {
     enum { LOCAL_VALUES = 24 };
-    sc_dual_value local[LOCAL_VALUES], out;
-    int n_slots = slot_count(e);
-    size_t need = (size_t)n_slots + (size_t)e->n_kids;
-    sc_dual_value *buffer = need <= LOCAL_VALUES ? local : malloc(need * sizeof *buffer);
-    if (buffer == NULL) {
-        sc_value nan = scaled(&(sc_value){sc_expr_result_type(e), {0}}, NAN);
+    sc_dual_value local[LOCAL_VALUES];
+    sc_dual_value *values = sc_expr_values(e, sizeof *values, local, sizeof local);
+    if (values == NULL) {
+        sc_value nan = sc_expr_nan(sc_expr_result_type(e));
         return (sc_dual_value){nan, {nan, nan}};
     }
-    dual_state st = {e, inputs, buffer, buffer + n_slots, 0};
-    for (int i = 0; i < e->n_stmts; i++)
-        dual_node(&st, e->stmts[i].root, &st.slots[e->stmts[i].slot]);
-    dual_node(&st, e->root, &out);
-    if (buffer != local)
-        free(buffer);
+    for (int i = 0; i < e->n_nodes; i++)
+        values[e->nodes[i].base] = dual_node(inputs, &e->nodes[i], values);
+    sc_dual_value out = values[e->n_stmts];
+    if (values != local)
+        free(values);
     return out;
 }

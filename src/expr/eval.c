@@ -1,18 +1,21 @@
-/* Evaluation of a compiled expression in a precision (shadecalc/expr.h): a walk of the typed
- * tree, every literal, operation and built-in result rounded to the precision. */
+/* Evaluation of a compiled expression in a precision (shadecalc/expr.h): one pass over the
+ * flat program, every literal, operation and built-in result rounded to the precision. */
+#include <math.h>
+#include <stdlib.h>
+
 #include "expr/expr_internal.h"
 #include "shadecalc/pmath.h"
 
+/* Up to this many values an evaluation needs no allocation (most expressions: a flat chain
+ * needs 2, each level of nesting a few more, each statement 1). */
+enum { LOCAL_VALUES = 32 };
+
 typedef struct {
-    const sc_expr *e;
     sc_prec p;
     const sc_value *inputs;
-    sc_value slots[SC_EXPR_MAX_STATEMENTS];
     sc_expr_domain_fn on_domain;
     void *user;
 } eval_state;
-
-static sc_value eval_node(eval_state *st, int index);
 
 static sc_value rounded(sc_prec p, sc_value v)
 {
@@ -50,7 +53,7 @@ sc_value sc_expr_binary(sc_prec p, int op, sc_type type, const sc_value *a, cons
     return out;
 }
 
-static sc_value eval_call(eval_state *st, const expr_node *n, const sc_value *args)
+static sc_value eval_call(const eval_state *st, const expr_node *n, const sc_value *args)
 {
     call_context ctx = {st->p, n->column, sc_builtin_name(n->op), st->on_domain, st->user};
     return sc_builtin_eval(n->op, &ctx, args, n->count);
@@ -70,16 +73,14 @@ sc_value sc_expr_select(const expr_node *n, const sc_value *base)
     return out;
 }
 
-static sc_value eval_node(eval_state *st, int index)
+/* Node n from the values computed before it (its operands are values[n->base ...]). */
+static sc_value eval_node(const eval_state *st, const expr_node *n, const sc_value *values)
 {
-    const expr_node *n = &st->e->nodes[index];
-    sc_value args[16];
-    for (int i = 0; i < n->count; i++)
-        args[i] = eval_node(st, st->e->kids[n->first + i]);
+    const sc_value *args = values + n->base;
     switch (n->kind) {
     case NODE_NUMBER: return (sc_value){SC_FLOAT, {sc_round(st->p, n->num)}};
     case NODE_INPUT: return rounded(st->p, st->inputs[n->op]);
-    case NODE_SLOT: return st->slots[n->op];
+    case NODE_SLOT: return values[n->op];
     case NODE_NEGATE:
         return sc_expr_binary(st->p, '*', n->type, &args[0], &(sc_value){SC_FLOAT, {-1.0}});
     case NODE_BINARY: return sc_expr_binary(st->p, n->op, n->type, &args[0], &args[1]);
@@ -89,11 +90,34 @@ static sc_value eval_node(eval_state *st, int index)
     }
 }
 
+sc_value sc_expr_nan(sc_type t)
+{
+    sc_value v = {t, {0}};
+    for (int k = 0; k < sc_type_size(t); k++)
+        v.v[k] = NAN;
+    return v;
+}
+
+void *sc_expr_values(const sc_expr *e, size_t size, void *local, size_t local_size)
+{
+    size_t need = (size_t)e->n_values * size;
+    return need <= local_size ? local : malloc(need);
+}
+
+/* The program is flat (expr_internal.h): one pass over the nodes, no recursion. The values
+ * are not cleared: each is written before it is read. */
 sc_value sc_expr_eval(const sc_expr *e, sc_prec p, const sc_value *inputs,
                       sc_expr_domain_fn on_domain, void *user)
 {
-    eval_state st = {.e = e, .p = p, .inputs = inputs, .on_domain = on_domain, .user = user};
-    for (int i = 0; i < e->n_stmts; i++)
-        st.slots[e->stmts[i].slot] = eval_node(&st, e->stmts[i].root);
-    return eval_node(&st, e->root);
+    sc_value local[LOCAL_VALUES];
+    sc_value *values = sc_expr_values(e, sizeof *values, local, sizeof local);
+    if (values == NULL)
+        return sc_expr_nan(sc_expr_result_type(e));
+    eval_state st = {p, inputs, on_domain, user};
+    for (int i = 0; i < e->n_nodes; i++)
+        values[e->nodes[i].base] = eval_node(&st, &e->nodes[i], values);
+    sc_value out = values[e->n_stmts];
+    if (values != local)
+        free(values);
+    return out;
 }

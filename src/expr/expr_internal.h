@@ -1,15 +1,21 @@
 /* The compiled form of a shadecalc expression (shadecalc/expr.h), shared by the parser, the
- * built-in table and the evaluator. A program is a tree of typed nodes in one array; a node's
- * children are kids[first .. first + count). */
+ * built-in table and the evaluators. A program is a flat register program: its typed nodes in
+ * post-order (each node after its children, children left to right, statements first), so
+ * one loop over the array evaluates it without recursion, however deep the tree. Every node
+ * reads its `count` operands from values[base .. base + count) and writes its result to
+ * values[base]; statement s leaves its value in values[s] (read by NODE_SLOT s), and the final
+ * expression's in values[n_stmts]. The parser assigns the bases as a stack would. */
 #ifndef SHADECALC_EXPR_INTERNAL_H
 #define SHADECALC_EXPR_INTERNAL_H
+
+#include <stddef.h>
 
 #include "shadecalc/expr.h"
 
 typedef enum {
     NODE_NUMBER,  /* num */
     NODE_INPUT,   /* op = input index */
-    NODE_SLOT,    /* op = statement slot index */
+    NODE_SLOT,    /* op = statement index (its value is values[op]) */
     NODE_NEGATE,  /* one child */
     NODE_BINARY,  /* op = '+' '-' '*' '/'; two children */
     NODE_CALL,    /* op = built-in index; children are the arguments */
@@ -23,25 +29,18 @@ typedef struct {
     sc_type type;
     int column;
     int op;
-    int first, count;
+    int base, count; /* operands in values[base .. base + count), result in values[base] */
     double num;
     unsigned char swz[4];
     int swz_len;
 } expr_node;
 
-typedef struct {
-    int slot; /* the value goes to slots[slot] */
-    int root;
-} expr_statement;
-
 struct sc_expr {
-    expr_node *nodes;
+    expr_node *nodes; /* in evaluation order */
     int n_nodes, cap_nodes;
-    int *kids;
-    int n_kids, cap_kids;
-    expr_statement *stmts;
-    int n_stmts, cap_stmts;
-    int root;
+    int n_stmts;
+    int n_values; /* size of the values array an evaluation needs */
+    int root;     /* the last node; its value is values[n_stmts] */
     int n_inputs;
 };
 
@@ -49,6 +48,12 @@ struct sc_expr {
 #define SC_EXPR_MAX_STATEMENTS 64
 
 /* ---- evaluation (eval.c), shared with the dual-number evaluator (dual.c) ---- */
+
+/* The values array of one evaluation of e with elements of `size` bytes: `local` (of
+ * local_size bytes) if large enough, else allocated (NULL if out of memory). */
+void *sc_expr_values(const sc_expr *e, size_t size, void *local, size_t local_size);
+/* A value of type t with every component NaN (the result when out of memory). */
+sc_value sc_expr_nan(sc_type t);
 
 /* `a op b` (op '+' '-' '*' '/') with GLSL's rules, the result of type `type`, in precision p. */
 sc_value sc_expr_binary(sc_prec p, int op, sc_type type, const sc_value *a, const sc_value *b);

@@ -15,7 +15,10 @@
 
 #include "expr/expr_internal.h"
 
-enum { MAX_DEPTH = 200, MAX_ARGS = 16, MAX_NAME = 64 };
+/* MAX_DEPTH bounds the parser's recursion: every level of parentheses, of call arguments and
+ * every unary operator goes through parse_unary once. Binary operators are parsed by loops, so
+ * a flat chain of any length costs no depth (and its evaluation none: expr_internal.h). */
+enum { MAX_DEPTH = 256, MAX_ARGS = 16, MAX_NAME = 64 };
 
 typedef enum { TOK_END, TOK_NUMBER, TOK_IDENT, TOK_PUNCT, TOK_BAD } tok_kind;
 
@@ -42,6 +45,7 @@ typedef struct {
     sc_expr_error *err;
     int failed;
     int depth;
+    int n_pending; /* values computed and not yet consumed (add_node) */
     symbol syms[SC_EXPR_MAX_STATEMENTS + 32];
     int n_syms;
 } parser;
@@ -178,16 +182,19 @@ static int grow(void **buf, int *cap, int need, size_t elem)
     return 0;
 }
 
-static int add_node(parser *ps, expr_node node, const int *kids, int n_kids)
+/* Appends a node whose n_operands operands are the last values computed: the parser adds
+ * every node after its operands, left to right, so the nodes are in post-order and the values
+ * behave as a stack (expr_internal.h). */
+static int add_node(parser *ps, expr_node node, int n_operands)
 {
     sc_expr *e = ps->e;
-    if (grow((void **)&e->nodes, &e->cap_nodes, e->n_nodes + 1, sizeof *e->nodes) < 0 ||
-        grow((void **)&e->kids, &e->cap_kids, e->n_kids + n_kids, sizeof *e->kids) < 0)
+    if (grow((void **)&e->nodes, &e->cap_nodes, e->n_nodes + 1, sizeof *e->nodes) < 0)
         return fail_msg(ps, 0, "out of memory");
-    node.first = e->n_kids;
-    node.count = n_kids;
-    for (int i = 0; i < n_kids; i++)
-        e->kids[e->n_kids++] = kids[i];
+    node.count = n_operands;
+    node.base = ps->n_pending - n_operands;
+    ps->n_pending = node.base + 1;
+    if (ps->n_pending > e->n_values)
+        e->n_values = ps->n_pending;
     e->nodes[e->n_nodes] = node;
     return e->n_nodes++;
 }
@@ -287,7 +294,7 @@ static int parse_call(parser *ps, token name)
             return fail_msg(ps, name.column, msg);
         node.kind = NODE_CALL;
     }
-    return add_node(ps, node, args, n_args);
+    return add_node(ps, node, n_args);
 }
 
 static int parse_identifier(parser *ps)
@@ -306,7 +313,7 @@ static int parse_identifier(parser *ps)
         return fail(ps, name.column, "unknown variable '%s'", buf, "");
     }
     expr_node node = {.kind = sym->kind, .type = sym->type, .column = name.column, .op = sym->index};
-    return add_node(ps, node, NULL, 0);
+    return add_node(ps, node, 0);
 }
 
 static int parse_primary(parser *ps)
@@ -316,7 +323,7 @@ static int parse_primary(parser *ps)
     case TOK_NUMBER: {
         next(ps);
         expr_node node = {.kind = NODE_NUMBER, .type = SC_FLOAT, .column = t.column, .num = t.num};
-        return add_node(ps, node, NULL, 0);
+        return add_node(ps, node, 0);
     }
     case TOK_IDENT: return parse_identifier(ps);
     case TOK_BAD: {
@@ -381,7 +388,7 @@ static int parse_swizzle(parser *ps, int base)
     }
     node.type = t.len == 1 ? SC_FLOAT : (sc_type)(SC_VEC2 + t.len - 2);
     next(ps);
-    return add_node(ps, node, &base, 1);
+    return add_node(ps, node, 1);
 }
 
 static int parse_index(parser *ps, int base)
@@ -403,7 +410,7 @@ static int parse_index(parser *ps, int base)
         return -1;
     expr_node node = {.kind = NODE_INDEX, .column = column, .op = (int)t.num};
     node.type = sc_type_matrix_n(bt) ? (sc_type)(SC_VEC2 + limit - 2) : SC_FLOAT;
-    return add_node(ps, node, &base, 1);
+    return add_node(ps, node, 1);
 }
 
 static int parse_postfix(parser *ps)
@@ -456,14 +463,19 @@ static int make_binary(parser *ps, token op, int lhs, int rhs)
         return fail_msg(ps, op.column, msg);
     }
     expr_node node = {.kind = NODE_BINARY, .type = t, .column = op.column, .op = op.start[0]};
-    int kids[2] = {lhs, rhs};
-    return add_node(ps, node, kids, 2);
+    return add_node(ps, node, 2);
 }
 
 static int parse_unary(parser *ps)
 {
-    if (++ps->depth > MAX_DEPTH)
-        return fail_msg(ps, ps->tok.column, "expression nested too deeply");
+    if (ps->depth++ > MAX_DEPTH) { /* depth: the levels of nesting around this operand */
+        char msg[sizeof ps->err->message];
+        snprintf(msg, sizeof msg,
+                 "expression nested too deeply (more than %d levels of parentheses, calls and "
+                 "unary operators)",
+                 MAX_DEPTH);
+        return fail_msg(ps, ps->tok.column, msg);
+    }
     int result;
     if (is_punct(ps, '-') || is_punct(ps, '+')) {
         token op = ps->tok;
@@ -473,7 +485,7 @@ static int parse_unary(parser *ps)
             result = operand;
         else {
             expr_node node = {.kind = NODE_NEGATE, .type = type_of(ps, operand), .column = op.column};
-            result = add_node(ps, node, &operand, 1);
+            result = add_node(ps, node, 1);
         }
     } else {
         result = parse_postfix(ps);
@@ -496,8 +508,6 @@ static int parse_term(parser *ps)
 
 static int parse_expr(parser *ps)
 {
-    if (++ps->depth > MAX_DEPTH)
-        return fail_msg(ps, ps->tok.column, "expression nested too deeply");
     int lhs = parse_term(ps);
     while (lhs >= 0 && (is_punct(ps, '+') || is_punct(ps, '-'))) {
         token op = ps->tok;
@@ -505,7 +515,6 @@ static int parse_expr(parser *ps)
         int rhs = parse_term(ps);
         lhs = rhs < 0 ? -1 : make_binary(ps, op, lhs, rhs);
     }
-    ps->depth--;
     return lhs;
 }
 
@@ -533,9 +542,6 @@ static int parse_statement(parser *ps)
         return -1;
     if (e->n_stmts == SC_EXPR_MAX_STATEMENTS)
         return fail_msg(ps, name.column, "too many statements (at most 64)");
-    if (grow((void **)&e->stmts, &e->cap_stmts, e->n_stmts + 1, sizeof *e->stmts) < 0)
-        return fail_msg(ps, 0, "out of memory");
-    e->stmts[e->n_stmts] = (expr_statement){e->n_stmts, root};
     if (add_symbol(ps, name.start, name.len, type_of(ps, root), NODE_SLOT, e->n_stmts,
                    name.column) < 0)
         return -1;
@@ -595,8 +601,6 @@ void sc_expr_free(sc_expr *e)
     if (!e)
         return;
     free(e->nodes);
-    free(e->kids);
-    free(e->stmts);
     free(e);
 }
 

@@ -5,6 +5,7 @@
 #       standard output and the whole standard error (trailing newlines ignored).
 #       STDOUT or STDERR given as '*' is not checked; '~TEXT' checks that it contains TEXT.
 #   expect_stdin NAME INPUT STATUS STDOUT STDERR -- ARGS...   the same, with INPUT on stdin.
+#   verdict NAME CONDITION...   a pass or a fail for a shell test.
 #
 # Each check prints 'ok NAME' or 'FAIL NAME' with a diff; the counts go to $E2E_COUNTS.
 
@@ -38,6 +39,12 @@ e2e_run() { # NAME INPUT STATUS STDOUT STDERR -- ARGS...
         echo "  stderr: want [$want_err]"; echo "          got  [$err]"
         echo fail >>"$E2E_COUNTS"
     fi
+}
+
+verdict() {
+    name=$1; shift
+    if "$@"; then echo "ok   $name"; echo pass >>"$E2E_COUNTS"
+    else echo "FAIL $name: $*"; echo fail >>"$E2E_COUNTS"; fi
 }
 
 expect() { n=$1; shift; e2e_run "$n" "" "$@"; }

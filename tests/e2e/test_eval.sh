@@ -68,3 +68,71 @@ expect "bad precision"            2 '' "error: eval: unknown precision 'half' (d
 expect "bad format"               2 '' "error: eval: unknown format 'xml' (glsl, csv, jsonl)" -- eval -f xml '1'
 expect "unknown option"           2 '' "~unknown option '--frob'" -- eval --frob '1'
 expect "help"                     0 '~usage: shadecalc eval' '' -- eval --help
+
+# long flat expressions: evaluated without recursion (a chain is as deep as it is long)
+chain4000=$(awk 'BEGIN { s = "1"; for (i = 1; i < 4000; i++) s = s "+1"; print s }')
+expect "4000-term chain"          0 '4000' '' -- eval "$chain4000"
+expect "4000-term chain in -D"    0 '4001' '' -- eval -D "x=$chain4000" 'x + 1'
+expect_stdin "4000-term chain on stdin" "$chain4000" 0 '4000' '' -- eval
+expect "4000-term chain in sweep" 0 'x,value
+1,4001
+2,4002' '' -- sweep --var x=1,2 "x + $chain4000"
+# one argument is at most 128 KiB (Linux MAX_ARG_STRLEN): 60 000 terms, 120 KB
+chain60k=$(awk 'BEGIN { s = "1"; for (i = 1; i < 60000; i++) s = s "+1"; print s }')
+expect "60000-term chain"         0 '60000' '' -- eval "$chain60k"
+# ~1 MB on standard input; alternating signs keep every partial sum exact in highp
+expect_stdin "1 MB chain on stdin" "$(awk 'BEGIN { for (i = 0; i < 250000; i++) printf "+1-1"; print "+7" }')" 0 '7' '' -- eval
+nest=$(awk 'BEGIN { for (i = 0; i < 300; i++) printf "-("; printf "1"; for (i = 0; i < 300; i++) printf ")" }')
+expect "deep nesting names the limit" 2 '' '~expression nested too deeply (more than 256 levels of parentheses, calls and unary operators)' -- eval -- "$nest"
+
+# standard input: streamed line by line, bad lines reported by number, read errors reported
+# stdin_run NAME STATUS STDOUT STDERR -- ARGS... < INPUT: like expect (exact outputs), with a file
+# or a device on standard input
+stdin_run() {
+    name=$1 want_status=$2 want_out=$3 want_err=$4; shift 5
+    "$SHADECALC" "$@" >"$e2e_tmp/out" 2>"$e2e_tmp/err"
+    verdict "$name" [ "$?:$(cat "$e2e_tmp/out"):$(cat "$e2e_tmp/err")" = "$want_status:$want_out:$want_err" ]
+}
+stdin_run "directory on stdin" 1 '' 'error: eval: standard input: Is a directory' -- eval <"$e2e_tmp"
+stdin_run "/dev/zero on stdin" 2 '' 'error: line 1: longer than 1048576 bytes' -- eval </dev/zero
+printf '1\n2\0003\n4\n' >"$e2e_tmp/nul"
+stdin_run "NUL byte names its line" 2 '1
+4' 'error: line 2: contains a NUL byte' -- eval <"$e2e_tmp/nul"
+expect_stdin "bad lines are reported, the others printed" '1 + 1
+2 +
+
+vec2(3)
+foo
+# a comment
+4
+' 2 '2
+vec2(3, 3)
+4' "error: line 2: column 4: expected an expression, found end of input
+error: line 5: column 1: unknown variable 'foo'" -- eval
+expect_stdin "CRLF lines"                "$(printf '1\r\n2\r\n')" 0 '1
+2' '' -- eval
+expect_stdin "strict domain error goes on" 'sqrt(-1.0)
+2' 1 '2' 'error: line 1: column 1: sqrt: x < 0 is outside the GLSL ES domain (--strict)' -- eval --strict
+expect_stdin "csv header from the first line" '1
+vec2(1)
+3' 2 'expression,value
+1,1
+3,3' 'error: line 2: a vec2 in csv under the header of a float (the first line'"'"'s type): give expressions of one type, or several as arguments' -- eval -f csv
+
+# endless input: results stream out (and the run ends when the reader does)
+verdict "endless input streams" [ "$(yes '1 + 1' | timeout 20 "$SHADECALC" eval | head -n 3 | tr '\n' ' ')" = "2 2 2 " ]
+# with SIGPIPE ignored, a closed output ends the run with an error instead of reading forever
+timeout 20 sh -c 'trap "" PIPE; yes 1 2>/dev/null | "$1" eval 2>"$2" | head -n 1 >/dev/null' sh "$SHADECALC" "$e2e_tmp/err"
+verdict "closed output stops endless input" grep -q 'eval: standard output: write error' "$e2e_tmp/err"
+# a co-process reads each result before it writes the next line: only a flush per line on a
+# pipe lets this finish
+mkfifo "$e2e_tmp/answers"
+timeout 20 sh -c '{ echo "1 + 1"; read -r a <&3; echo "$a * 10"; read -r b <&3; echo "$b" >"$1.last"; } 3<"$1" | "$2" eval >"$1"' sh "$e2e_tmp/answers" "$SHADECALC"
+verdict "results flushed line by line on a pipe" [ "$(cat "$e2e_tmp/answers.last" 2>/dev/null)" = 20 ]
+# 200 000 lines in constant memory: under a 64 MB address-space limit (not for sanitizer builds,
+# whose shadow memory alone needs more address space than that)
+if (ulimit -v 65536 && "$SHADECALC" eval 1) >/dev/null 2>&1; then
+    (ulimit -v 65536
+     expect_stdin "200000 lines in 64 MB" "$(awk 'BEGIN { for (i = 0; i < 200000; i++) print i " + 0.5" }')" 0 \
+         "$(awk 'BEGIN { for (i = 0; i < 200000; i++) printf "%.1f\n", i + 0.5 }')" '' -- eval)
+fi

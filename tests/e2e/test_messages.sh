@@ -58,7 +58,7 @@ expect "option: a zero normal"            2 '' 'error: --n 0,0,0: must not be th
 printf 'light point pos=0,0,1\nnn 0,0,1\n' >"$t/typo.scene"
 expect "scene: did you mean an item"      2 '' "error: $t/typo.scene:2: unknown item 'nn' (did you mean 'n'?)" -- shade -s "$t/typo.scene"
 printf 'light point pos=0,0,1\nn 0,0,1\0 junk\n' >"$t/nul.scene"
-expect "scene: a NUL byte is an error"    2 '' "error: $t/nul.scene:2: a NUL byte in the line" -- shade -s "$t/nul.scene"
+expect "scene: a NUL byte is an error"    2 '' "error: $t/nul.scene:2: contains a NUL byte" -- shade -s "$t/nul.scene"
 expect_stdin "scene: '-' is standard input" 'light point pos=0,0,1
 ' 0 '0.25464790894703254 0.25464790894703254 0.25464790894703254' '' -- shade -p double -s -
 expect_stdin "scene: stdin errors name it" 'light point pos=0,0,1

@@ -25,6 +25,14 @@ expect "options override brdf"   0 '0.31830987 0.31830987 0.31830987' '' -- shad
 printf 'light point pos=1,2\n' > "$e2e_tmp/bad.txt"
 expect "scene file error line"   2 '' "error: $e2e_tmp/bad.txt:1: light point: pos=1,2: expected a point X,Y,Z" -- shade --scene "$e2e_tmp/bad.txt"
 expect "missing scene file"      1 '' "error: $e2e_tmp/none.txt: No such file or directory" -- shade --scene "$e2e_tmp/none.txt"
+# what is read from a scene file is bounded: /dev/zero ends at once, not after 32 GB
+expect "/dev/zero as scene file"  2 '' 'error: /dev/zero:1: longer than 65536 bytes' -- shade --scene /dev/zero
+printf 'light directional dir=0,0,1\0 I=2\n' >"$e2e_tmp/nul.txt"
+expect "NUL byte in a scene file" 2 '' "error: $e2e_tmp/nul.txt:1: contains a NUL byte" -- shade --scene "$e2e_tmp/nul.txt"
+expect "directory as scene file"  1 '' "error: $e2e_tmp: Is a directory" -- shade --scene "$e2e_tmp"
+yes '# a comment line' | head -n 1000000 >"$e2e_tmp/long.txt" # 17 bytes a line: 986896 passes 16 MiB
+expect "scene file over 16 MiB"   2 '' "error: $e2e_tmp/long.txt:986896: the input is longer than 16777216 bytes" -- shade --scene "$e2e_tmp/long.txt"
+rm -f "$e2e_tmp/long.txt"
 
 # errors name the item and the valid range
 expect "opengl cutoff 120"       2 '' 'error: light spot: cutoff=120: spot=opengl takes 0..90 or 180' -- shade --light 'spot pos=0,4,0 dir=0,-1,0 spot=opengl cutoff=120'

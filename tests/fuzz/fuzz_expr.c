@@ -1,5 +1,6 @@
-/* libFuzzer harness: the expression parser, type checker and evaluator must accept or reject
- * any input without crashing, leaking or reading out of bounds, in every precision. */
+/* libFuzzer harness: the expression parser, type checker and evaluators must accept or reject
+ * any input without crashing, leaking or reading out of bounds, in every precision and with
+ * dual numbers. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +34,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (v.type != sc_expr_result_type(e))
                 abort();
         }
+        sc_dual_value duals[2] = {{values[0], {{SC_FLOAT, {1}}, {SC_FLOAT, {0}}}},
+                                  {values[1], {{SC_VEC3, {0}}, {SC_VEC3, {0, 1, 0}}}}};
+        if (sc_expr_eval_dual(e, duals).x.type != sc_expr_result_type(e))
+            abort();
         sc_expr_free(e);
     } else if (err.column < 0 || err.column > (int)size + 1 || err.message[0] == '\0') {
         abort();

@@ -9,7 +9,8 @@ for f in "$@"; do
     work=$(mktemp -d)
     [ -d "$seeds" ] && cp -r "$seeds/." "$work/"
     echo "fuzz: $name for ${secs}s"
-    if ! "$f" -max_total_time="$secs" -timeout=5 -rss_limit_mb=2048 -print_final_stats=0 \
+    if ! "$f" -max_total_time="$secs" -max_len=65536 -timeout=5 -rss_limit_mb=2048 \
+        -print_final_stats=0 \
         -artifact_prefix="build-fuzz/$name-" "$work" >"build-fuzz/$name.log" 2>&1; then
         tail -40 "build-fuzz/$name.log" >&2
         echo "fuzz: $name FAILED (log: build-fuzz/$name.log)" >&2

@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <cmocka.h>
@@ -332,6 +333,110 @@ static void deep_nesting_is_an_error_not_a_crash(void **state)
     assert_null(sc_expr_compile(src, NULL, 0, &err));
 }
 
+/* ---- deep and long expressions: evaluated without recursion, or a clear error ---- */
+
+/* src built by repeating: prefix, `times` copies of `open`, `core`, `times` copies of `close`. */
+static char *repeated(const char *open, int times, const char *core, const char *close)
+{
+    size_t lo = strlen(open), lc = strlen(close), lcore = strlen(core);
+    char *src = malloc((size_t)times * (lo + lc) + lcore + 1), *p = src;
+    assert_non_null(src);
+    for (int i = 0; i < times; i++, p += lo)
+        memcpy(p, open, lo);
+    memcpy(p, core, lcore);
+    p += lcore;
+    for (int i = 0; i < times; i++, p += lc)
+        memcpy(p, close, lc);
+    *p = '\0';
+    return src;
+}
+
+/* A flat chain compiles to a left-leaning tree as deep as it is long: 200 000 additions of 0.1
+ * in highp against the same sum in C binary32 arithmetic, and in double against double. */
+static void long_flat_chains_evaluate(void **state)
+{
+    (void)state;
+    enum { TERMS = 200000 };
+    char *src = repeated("0.1+", TERMS - 1, "0.1", "");
+    float sum32 = 0.1f;
+    double sum64 = 0.1;
+    for (int i = 1; i < TERMS; i++) {
+        sum32 += 0.1f;
+        sum64 += 0.1;
+    }
+    assert_true(eval_in(SC_HIGHP, src).v[0] == (double)sum32);
+    assert_true(eval_d(src).v[0] == sum64);
+    free(src);
+}
+
+/* Statements keep their values while long chains run after them. */
+static void statements_survive_long_chains(void **state)
+{
+    (void)state;
+    char *chain = repeated("1+", 9999, "1", "");
+    size_t len = 2 * strlen(chain) + 64;
+    char *src = malloc(len);
+    assert_non_null(src);
+    snprintf(src, len, "a = %s; b = a * 2.; b - a + %s", chain, chain);
+    assert_true(eval_d(src).v[0] == 20000.0);
+    free(chain);
+    free(src);
+}
+
+/* A right-leaning tree needs parentheses: 1 - (1 - (... - 1)) as deep as the nesting limit
+ * allows, against the alternating sum. */
+static void right_leaning_trees_evaluate_to_the_limit(void **state)
+{
+    (void)state;
+    enum { LEVELS = 256 };
+    char *src = repeated("2-(", LEVELS, "1", ")");
+    double want = 1.0;
+    for (int i = 0; i < LEVELS; i++)
+        want = 2.0 - want;
+    assert_true(eval_d(src).v[0] == want);
+    free(src);
+    src = repeated("2-(", LEVELS + 1, "1", ")");
+    assert_error(src, 3 * (LEVELS + 1) + 1, "more than 256 levels");
+    free(src);
+}
+
+/* Unary chains: every unary operator is a level of nesting. */
+static void deep_unary_chains_evaluate_or_name_the_limit(void **state)
+{
+    (void)state;
+    char *src = repeated("-", 256, "1", "");
+    assert_true(eval_d(src).v[0] == 1.0);
+    free(src);
+    src = repeated("-(", 128, "1", ")"); /* each level: a parenthesis and a minus */
+    assert_true(eval_d(src).v[0] == 1.0);
+    free(src);
+    src = repeated("-", 257, "1", "");
+    assert_error(src, 258, "expression nested too deeply (more than 256 levels");
+    free(src);
+    assert_error("!1", 1, "unexpected '!'"); /* no logical not in the language */
+}
+
+/* Nested calls keep earlier arguments pending: dot(vec2(1, .5), vec2(x, 1)) = x + 0.5 at each
+ * level, and its derivative in x is 1 (the dual evaluator runs the same program). */
+static void nested_calls_evaluate_with_derivatives(void **state)
+{
+    (void)state;
+    enum { LEVELS = 128 }; /* a call and its vec2 argument: two levels each */
+    char *src = repeated("dot(vec2(1, .5), vec2(", LEVELS, "u", ", 1))");
+    sc_expr_input in = {"u", SC_FLOAT};
+    sc_expr_error err;
+    sc_expr *e = sc_expr_compile(src, &in, 1, &err);
+    if (!e)
+        fail_msg("column %d: %s", err.column, err.message);
+    sc_value u = {SC_FLOAT, {0.25}};
+    assert_true(sc_expr_eval(e, SC_HIGHP, &u, NULL, NULL).v[0] == 0.25 + 0.5 * LEVELS);
+    sc_dual_value du = {u, {{SC_FLOAT, {1.0}}, {SC_FLOAT, {0.0}}}};
+    sc_dual_value out = sc_expr_eval_dual(e, &du);
+    assert_true(out.x.v[0] == 0.25 + 0.5 * LEVELS && out.d[0].v[0] == 1.0 && out.d[1].v[0] == 0.0);
+    sc_expr_free(e);
+    free(src);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -349,6 +454,11 @@ int main(void)
         cmocka_unit_test(syntax_errors_name_the_column),
         cmocka_unit_test(type_errors_name_the_column),
         cmocka_unit_test(deep_nesting_is_an_error_not_a_crash),
+        cmocka_unit_test(long_flat_chains_evaluate),
+        cmocka_unit_test(statements_survive_long_chains),
+        cmocka_unit_test(right_leaning_trees_evaluate_to_the_limit),
+        cmocka_unit_test(deep_unary_chains_evaluate_or_name_the_limit),
+        cmocka_unit_test(nested_calls_evaluate_with_derivatives),
     };
     return cmocka_run_group_tests_name("expr", tests, NULL, NULL);
 }
