@@ -57,12 +57,10 @@ static double smith_lambda(sc_prec p, const sc_brdf *b, const sc_frame *f, const
 
 static double masking(sc_prec p, const sc_brdf *b, const brdf_geometry *g, roughness a)
 {
-    if (b->G == SC_G_VCAVITY) { /* min(1, 2 n·h n·v / v·h, 2 n·h n·l / v·h) */
-        double vh = sc_cos_floor(sc_p_dot(p, g->v, g->h, 3));
-        double k = Q(Q(2.0 * g->cos_h) / vh);
-        double gv = Q(k * g->cos_o), gl = Q(k * g->cos_i);
-        double m = gv < gl ? gv : gl;
-        return m < 1.0 ? m : 1.0;
+    if (b->G == SC_G_VCAVITY) { /* min(1, 2 n·h min(n·v, n·l) / v·h), v·h not floored */
+        double vh = sc_p_dot(p, g->v, g->h, 3);
+        double m = Q(Q(2.0 * g->cos_h) * (g->cos_o < g->cos_i ? g->cos_o : g->cos_i));
+        return m >= vh ? 1.0 : Q(m / vh); /* m >= 0, so v·h > 0 in the division */
     }
     double ll = smith_lambda(p, b, g->frame, g->l, a), lv = smith_lambda(p, b, g->frame, g->v, a);
     if (b->G == SC_G_SMITH_CORRELATED)
@@ -70,11 +68,12 @@ static double masking(sc_prec p, const sc_brdf *b, const brdf_geometry *g, rough
     return Q(Q(1.0 / Q(1.0 + ll)) * Q(1.0 / Q(1.0 + lv)));
 }
 
-/* Exact unpolarized dielectric Fresnel (pbrt FrDielectric), 1 on total internal reflection. */
+/* Exact unpolarized dielectric Fresnel (pbrt FrDielectric), 1 on total internal reflection —
+ * also where η² underflows to 0 (0/0 at normal incidence), the limit η → 0 for every angle. */
 static double fresnel_exact(sc_prec p, double eta, double c)
 {
     double sin2_t = Q(Q(1.0 - Q(c * c)) / Q(eta * eta));
-    if (sin2_t >= 1.0)
+    if (!(sin2_t < 1.0))
         return 1.0;
     double cos_t = sc_p_sqrt(p, Q(1.0 - sin2_t));
     double ec = Q(eta * c), et = Q(eta * cos_t);
@@ -97,8 +96,7 @@ void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
                            sc_brdf_terms *out)
 {
     sc_scale3(p, b->diff, Q(1.0 / SC_PI), out->diffuse);
-    roughness a = {Q(b->ax > SC_ALPHA_FLOOR ? b->ax : SC_ALPHA_FLOOR),
-                   Q(b->ay > SC_ALPHA_FLOOR ? b->ay : SC_ALPHA_FLOOR)};
+    roughness a = {sc_alpha_floor(p, b->ax), sc_alpha_floor(p, b->ay)};
     out->D = ndf(p, b, g, a);
     out->G = masking(p, b, g, a);
     fresnel(p, b, g, out->F);

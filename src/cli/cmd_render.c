@@ -349,7 +349,7 @@ static int complete_setup(shade_setup *s, const render_options *o)
         status = setup_add_light(s, default_light, "");
     if (status == SC_EXIT_OK && !s->have_model)
         status = setup_set_model(s, o->compare ? compare_brdf : default_brdf, "");
-    return status;
+    return status == SC_EXIT_OK ? setup_check_range(s, o->prec) : status;
 }
 
 /* ---- meshes ---- */
