@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "brdf/brdf_internal.h"
+#include "shadecalc/light.h"
 
 typedef struct {
     double ax, ay;
@@ -30,8 +31,8 @@ static double ndf(sc_prec p, const sc_brdf *b, const brdf_geometry *g, roughness
 {
     double ch = g->cos_h, ch2 = Q(ch * ch), s2 = slope2(p, g->frame, g->h, a);
     double pa = Q(Q(SC_PI * a.ax) * a.ay);
-    if (ch <= 0.0)
-        return 0.0;
+    if (ch <= 0.0 || isinf(pa))
+        return 0.0; /* π α_x α_y beyond the precision: the limit α → ∞, 0 (not inf·0) */
     if (b->D == SC_D_BECKMANN) { /* exp(−s²/cos²θ_h) / (π α_x α_y cos⁴θ_h) */
         double e = s2 == 0.0 ? 1.0 : sc_p_exp(p, Q(-Q(s2 / ch2)));
         return e == 0.0 ? 0.0 : Q(e / Q(pa * Q(ch2 * ch2)));
@@ -100,12 +101,13 @@ void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
     out->D = ndf(p, b, g, a);
     out->G = masking(p, b, g, a);
     fresnel(p, b, g, out->F);
-    double dg = Q(out->D * out->G);
+    /* D = inf where cos⁴θ_h underflows meets G = 0 at grazing angles: 0, not NaN */
+    double dg = sc_mul_reach(p, out->D, out->G);
     if (dg == 0.0)
         return; /* D or G vanished: no 0/0 where the cosines' product underflows */
     dg = Q(dg / Q(Q(4.0 * sc_cos_floor(g->cos_i)) * sc_cos_floor(g->cos_o)));
     if (b->form == SC_CT_1982)
         dg = Q(4.0 * dg);
     for (int k = 0; k < 3; k++)
-        out->specular[k] = Q(Q(dg * out->F[k]) * Q(b->spec[k]));
+        out->specular[k] = sc_mul_reach(p, sc_mul_reach(p, dg, out->F[k]), Q(b->spec[k]));
 }

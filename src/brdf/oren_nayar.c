@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "brdf/brdf_internal.h"
+#include "shadecalc/light.h"
 
 /* cos Δφ from the projections of l and v onto the tangent plane. */
 static double cos_delta_phi(sc_prec p, const brdf_geometry *g)
@@ -22,7 +23,14 @@ static double cos_delta_phi(sc_prec p, const brdf_geometry *g)
     return c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c;
 }
 
-static double clamped_acos(sc_prec p, double c) { return sc_p_acos(p, c > 1.0 ? 1.0 : c); }
+/* θ = acos(c) for c in (0, 1], never above π/2: highp rounds acos of a tiny cosine to
+ * binary32(π/2) = 1.57079637 > π/2, whose tangent is −2.3e7 (f turned negative, −6.6e6, at
+ * cos θ = 3e-19); it takes the precision's value just below π/2 instead. */
+static double clamped_acos(sc_prec p, double c)
+{
+    double a = sc_p_acos(p, c > 1.0 ? 1.0 : c);
+    return a > SC_PI / 2.0 ? Q(a - sc_prec_ulp(p, a)) : a;
+}
 
 /* σ²/(σ² + k), 1 where σ² overflows the precision (inf/inf). */
 static double sigma_ratio(sc_prec p, double s2, double k)
@@ -74,6 +82,7 @@ void sc_brdf_oren_nayar(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_
     double two_beta_pi = Q(Q(2.0 * beta) / SC_PI);
     double f2 = Q(Q(Q(0.17 * inv_pi) * sigma_ratio(p, s2, 0.13)) *
                   Q(1.0 - Q(cdp * Q(two_beta_pi * two_beta_pi))));
+    f2 = f2 > 0.0 ? f2 : 0.0; /* 2β/π rounded above 1 (mediump, lowp) must not make it negative */
     for (int c = 0; c < 3; c++)
-        out->diffuse[c] = Q(out->diffuse[c] + Q(Q(Q(b->diff[c]) * Q(b->diff[c])) * f2));
+        out->diffuse[c] = Q(out->diffuse[c] + sc_mul_reach(p, Q(Q(b->diff[c]) * Q(b->diff[c])), f2));
 }

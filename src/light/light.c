@@ -26,26 +26,23 @@ static double lobe_pow(sc_prec p, double x, double y)
 
 /* ---- distance attenuation (SPEC §3) ---- */
 
-/* 1/r², as (1/r)² where r² overflows the precision but 1/r² may not (highp r = 1e20: 1e-40, a
- * subnormal, not 0). */
+/* 1/r²; where r² overflows the precision but 1/r² may not (highp r = 1e20: 1e-40, a
+ * subnormal, not 0), r² is formed in double (r is at most the precision's largest value, so
+ * r² <= 1.2e77) and only 1/r² rounded. */
 static double inverse_square(sc_prec p, double r)
 {
     double r2 = Q(r * r);
-    if (isinf(r2)) {
-        double t = Q(1.0 / r);
-        return Q(t * t);
-    }
+    if (isinf(r2) && isfinite(r))
+        return Q(1.0 / (r * r));
     return Q(1.0 / fmax(r2, denom_floor));
 }
 
-/* 1/(s_c + s_l r + s_q r²); where the sum overflows, t²/(s_c t² + s_l t + s_q) with t = 1/r. */
+/* 1/(s_c + s_l r + s_q r²); where the sum overflows the precision, formed in double. */
 static double clq(sc_prec p, const sc_atten *a, double r)
 {
     double d = Q(Q(a->sc + Q(a->sl * r)) + Q(a->sq * Q(r * r)));
-    if (isinf(d) && isfinite(r)) {
-        double t = Q(1.0 / r), t2 = Q(t * t);
-        return Q(t2 / Q(Q(Q(a->sc * t2) + Q(a->sl * t)) + Q(a->sq)));
-    }
+    if (isinf(d) && isfinite(r))
+        return Q(1.0 / (a->sc + a->sl * r + a->sq * r * r));
     return Q(1.0 / fmax(d, denom_floor));
 }
 
@@ -155,6 +152,8 @@ void sc_light_init(sc_light *light, sc_light_kind kind)
     light->range = HUGE_VAL;
 }
 
+static int is_zero3(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
 static void rounded3(sc_prec p, const double in[3], double out[3])
 {
     for (int c = 0; c < 3; c++)
@@ -199,6 +198,21 @@ static double length_unit(sc_prec p, const double d[3], double unit[3])
     return Q(ldexp(sc_p_length(p, scaled, 3), k));
 }
 
+/* The unit vector of a light's direction (a uniform the host prepares): where its rounded
+ * components vanish in p or their squared length would over/underflow, the direction is first
+ * scaled by a power of two in double (dir=1e-30,0,1e-30 in mediump: (0.707, 0, 0.707)). */
+static void unit_direction(sc_prec p, const double dir[3], double out[3])
+{
+    double d[3];
+    rounded3(p, dir, d);
+    if (is_zero3(d) || !square_is_safe(p, d)) {
+        int k = ilogb(fmax(fabs(dir[0]), fmax(fabs(dir[1]), fabs(dir[2]))));
+        for (int c = 0; c < 3; c++)
+            d[c] = Q(ldexp(dir[c], -k));
+    }
+    length_unit(p, d, out);
+}
+
 /* p_L − p_S in precision p, halved (and *twice = 1) where a difference overflows: the
  * direction survives and the distance is twice the halved length. */
 static void light_offset(sc_prec p, const double pos_l[3], const double pos_s[3], double d[3],
@@ -219,8 +233,7 @@ void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const 
     *out = (sc_light_sample){.f_d = 1.0, .spot = 1.0};
     double d[3];
     if (light->kind == SC_LIGHT_DIRECTIONAL) {
-        rounded3(p, light->dir, d);
-        length_unit(p, d, out->l);
+        unit_direction(p, light->dir, out->l);
     } else {
         int twice;
         light_offset(p, light->pos, pos, d, &twice);
@@ -233,8 +246,7 @@ void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const 
     }
     if (light->kind == SC_LIGHT_SPOT) {
         double s[3], minus_l[3] = {-out->l[0], -out->l[1], -out->l[2]};
-        rounded3(p, light->dir, d);
-        length_unit(p, d, s);
+        unit_direction(p, light->dir, s);
         out->cos_s = sc_p_dot(p, s, minus_l, 3);
         out->spot = sc_spot_eval(p, &light->spot, out->cos_s);
     }
@@ -336,7 +348,6 @@ int sc_light_check_range(sc_prec p, const sc_light *l, char *msg, size_t size)
     return sc_params_in_range(p, params, (int)(sizeof params / sizeof params[0]), msg, size);
 }
 
-static int is_zero3(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
 int sc_light_validate(const sc_light *light, char *msg, size_t size)
 {
