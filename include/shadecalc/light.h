@@ -12,7 +12,9 @@
  * transcendental functions are the precision's built-ins (shadecalc/pmath.h).
  *
  * Edges (SPEC §3): denominators of inverse-square and clq below 1e-4 are raised to 1e-4
- * (Filament's ε², so r = 0 is finite); window with r_start = r_end is a step (1 for
+ * (Filament's ε², so r = 0 is finite), and where they overflow the precision they are formed in
+ * double (1/r² of highp r = 1e20 is 1e-40, not 0); distances and directions are scaled by a
+ * power of two where their squared length would overflow or underflow; window with r_start = r_end is a step (1 for
  * r <= r_start); pixar with f_c = f_max is the constant f_max inside r_c; a point on a point or
  * spot light (r = 0) takes l = n. Spot (SPEC §4): opengl is 1 for cutoff 180°, else
  * max(cos θ_s, 0)^exp inside the inclusive cone; directx and smoothstep with inner = outer are
