@@ -99,6 +99,10 @@ void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const doub
 
 int sc_brdf_validate(const sc_brdf *b, char *msg, size_t size);
 
+/* 0 if every numeric parameter is finite in precision p, else -1 with a message naming the key
+ * (sc_params_in_range, shadecalc/light.h). */
+int sc_brdf_check_range(sc_prec p, const sc_brdf *b, char *msg, size_t size);
+
 const char *sc_brdf_kind_name(sc_brdf_kind kind);
 /* The name of form `form` of a model ("normalized"), or NULL past the last. */
 const char *sc_brdf_form_name(sc_brdf_kind kind, int form);

@@ -5,13 +5,19 @@
  *   sc_albedo              a(θ_i) = ∫ f(l, v) cos θ_o dω_v by quadrature, with an error estimate
  *   sc_reciprocity_error   max |f(l, v) − f(v, l)| / max(|f(l, v)|, |f(v, l)|) over a grid of pairs
  *
- * The quadrature is centred on the mirror direction r of l (where the specular lobes peak):
- * polar angle ψ about r in geometric panels [0, π·2^-12], [π·2^-12, π·2^-11], …, [π/2, π], each
- * with Gauss–Legendre nodes, and azimuth χ about r by the trapezoid rule (exact for the periodic
- * integrand's low harmonics). Directions below the horizon contribute 0 (f = 0 there). The
- * estimate is the quadrature at `order` nodes per panel and 2·order azimuths; the error estimate
- * is its difference from the same at half the resolution. l lies in the t–n plane (φ_i = 0).
- * Evaluated in double.
+ * The quadrature is over (θ_o, φ_o) in composite Gauss–Legendre panels refined geometrically
+ * toward the mirror direction (θ_i, π): breakpoints θ_i ± π·2^-k and π ± π·2^-k for k = 1..K,
+ * where K >= 12 makes the narrowest panel at most an eighth of the specular lobe's width
+ * (√(2/m) for Phong, 2√(2/m) for Blinn-Phong, 2α for Ward and Cook–Torrance); breakpoints also
+ * at φ = π/2, 3π/2 (the kinks of Oren–Nayar's max terms) and at cos θ_o = 10⁻⁶, below which the
+ * models' divisions by cos θ_o use 10⁻⁶ (brdf.h): the integrand is the function `shade`
+ * evaluates, kinks included. The estimate is the quadrature at `order` nodes per panel; the
+ * error estimate is its difference from the same at half the order. l lies in the t–n plane
+ * (φ_i = 0). Evaluated in double.
+ *
+ * A lobe narrower than 10⁻⁶ rad (Phong m > 2·10¹², Blinn-Phong m > 8·10¹²) is not resolved:
+ * cos θ near 1 is known to 2⁻⁵³, so cos^m θ evaluated in double is a staircase with steps
+ * above 0.1 % there. sc_albedo then returns -1 and an infinite error estimate.
  */
 #ifndef SHADECALC_CHECK_H
 #define SHADECALC_CHECK_H
@@ -23,8 +29,9 @@ typedef struct {
     double error[3];  /* |a − a at half resolution| */
 } sc_albedo_result;
 
-/* theta_i in degrees; order = Gauss–Legendre nodes per panel (2..32; 0 = default 16). */
-void sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result *out);
+/* theta_i in degrees; order = Gauss–Legendre nodes per panel (2..32; 0 = default 16).
+ * 0, or -1 if the lobe is too narrow to resolve (the error estimate is then +inf). */
+int sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result *out);
 
 /* The worst relative reciprocity error over θ in {0, 10, …, 80, 89}° × φ in {0, 45, …, 315}°
  * for both directions; *worst_l, *worst_v (may be NULL) get the pair (unit vectors). */

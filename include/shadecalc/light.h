@@ -12,7 +12,9 @@
  * transcendental functions are the precision's built-ins (shadecalc/pmath.h).
  *
  * Edges (SPEC §3): denominators of inverse-square and clq below 1e-4 are raised to 1e-4
- * (Filament's ε², so r = 0 is finite); window with r_start = r_end is a step (1 for
+ * (Filament's ε², so r = 0 is finite), and where they overflow the precision they are formed in
+ * double (1/r² of highp r = 1e20 is 1e-40, not 0); distances and directions are scaled by a
+ * power of two where their squared length would overflow or underflow; window with r_start = r_end is a step (1 for
  * r <= r_start); pixar with f_c = f_max is the constant f_max inside r_c; a point on a point or
  * spot light (r = 0) takes l = n. Spot (SPEC §4): opengl is 1 for cutoff 180°, else
  * max(cos θ_s, 0)^exp inside the inclusive cone; directx and smoothstep with inner = outer are
@@ -86,8 +88,29 @@ double sc_spot_eval(sc_prec p, const sc_spot *s, double cos_s);
 void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const double n[3],
                    sc_light_sample *out);
 
+/* a·b rounded to p, except that a zero factor gives 0 even against an infinite one: a light
+ * that does not reach a point (f_d, spot, f or cos̄θ_i = 0) adds nothing, however bright — the
+ * shading equation never makes 0·∞ = NaN of an overflowed intensity. */
+double sc_mul_reach(sc_prec p, double a, double b);
+
 /* 0 if the parameters are inside their domains (SPEC §3–§4), else -1 with a message naming the
  * key and its valid range ("cutoff=120: spot=opengl takes 0..90 or 180"). */
 int sc_light_validate(const sc_light *light, char *msg, size_t size);
+
+/* Named parameters, for range checks: v[0..n-1] are the values of key. */
+typedef struct {
+    const char *key;
+    const double *v;
+    int n;
+} sc_param;
+
+/* 0 if every value rounds to a finite value in precision p (lowp saturates: always), else -1
+ * with "KEY=VALUE: beyond the highp range (|x| <= 3.4028235e+38)" for the first that does not. */
+int sc_params_in_range(sc_prec p, const sc_param *params, int count, char *msg, size_t size);
+
+/* sc_params_in_range over every numeric parameter of a light that its evaluation rounds to p
+ * (intensity and colours, pos, dir, attenuation and spot parameters; range, cutoff and the
+ * cone angles are compared in double). */
+int sc_light_check_range(sc_prec p, const sc_light *light, char *msg, size_t size);
 
 #endif

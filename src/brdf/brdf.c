@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "brdf/brdf_internal.h"
+#include "shadecalc/light.h"
 
 static const char *const kind_names[] = {"lambert", "phong", "blinn-phong",
                                          "ward",    "oren-nayar", "cook-torrance"};
@@ -55,7 +56,13 @@ double sc_lobe_pow(sc_prec p, double x, double y)
 void sc_scale3(sc_prec p, const double colour[3], double scale, double out[3])
 {
     for (int c = 0; c < 3; c++)
-        out[c] = Q(Q(colour[c]) * scale);
+        out[c] = sc_mul_reach(p, Q(colour[c]), scale);
+}
+
+double sc_alpha_floor(sc_prec p, double alpha)
+{
+    double a = Q(alpha > SC_ALPHA_FLOOR ? alpha : SC_ALPHA_FLOOR);
+    return a > 0.0 ? a : sc_prec_ulp(p, 0.0); /* lowp: 1e-4 rounds to 0, its step is 2^-8 */
 }
 
 double sc_cos_floor(double x) { return x > SC_COS_FLOOR ? x : SC_COS_FLOOR; }
@@ -156,6 +163,15 @@ static int validate_colour(const char *key, const double c[3], char *msg, size_t
         if (!(c[i] >= 0.0) || !isfinite(c[i]))
             return out_of_range(msg, size, key, c[i], ">= 0 and finite");
     return 0;
+}
+
+int sc_brdf_check_range(sc_prec p, const sc_brdf *b, char *msg, size_t size)
+{
+    double sigma_deg = b->sigma * 180.0 / SC_PI;
+    const sc_param params[] = {{"diff", b->diff, 3}, {"spec", b->spec, 3},  {"amb", b->amb, 3},
+                               {"m", &b->m, 1},      {"alpha", &b->ax, 1}, {"ay", &b->ay, 1},
+                               {"sigma", &sigma_deg, 1}, {"f0", b->f0, 3}, {"ior", &b->ior, 1}};
+    return sc_params_in_range(p, params, (int)(sizeof params / sizeof params[0]), msg, size);
 }
 
 int sc_brdf_validate(const sc_brdf *b, char *msg, size_t size)

@@ -32,8 +32,11 @@ void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
 
 /* x^y for the cosine lobes: pow(0, 0) = 1, a non-positive base gives 0 for y > 0. */
 double sc_lobe_pow(sc_prec p, double x, double y);
-/* out = scale · colour, rounded. */
+/* out = scale · colour, rounded; 0 where either is 0 (sc_mul_reach). */
 void sc_scale3(sc_prec p, const double colour[3], double scale, double out[3]);
+/* max(α, SC_ALPHA_FLOOR) rounded to p, and never 0: the precision's smallest step where the
+ * floor itself rounds to 0 (lowp). */
+double sc_alpha_floor(sc_prec p, double alpha);
 /* max(x, SC_COS_FLOOR) */
 double sc_cos_floor(double x);
 

@@ -6,7 +6,13 @@
 #include <string.h>
 
 static const double pi = 3.14159265358979323846;
-enum { MAX_ORDER = 32, FIRST_PANEL_EXP = 12 };
+/* Panels shrink geometrically toward the lobe: π·2^-k for k = 1..K, K at least MIN_PANEL_EXP
+ * and enough for the narrowest panel to be an eighth of the lobe's width. A lobe narrower than
+ * MIN_LOBE_WIDTH is not resolved: cos θ near 1 is known to 2^-53, so cos^m θ with
+ * m·2^-53 > 10^-3 (Blinn-Phong m > 8·10^12, width 2√(2/m) < 10^-6) is, as evaluated in double,
+ * a staircase with steps above 0.1 %; K would exceed MAX_PANEL_EXP. */
+#define MIN_LOBE_WIDTH 1e-6
+enum { MAX_ORDER = 32, MIN_PANEL_EXP = 12, MAX_PANEL_EXP = 25 };
 
 /* Gauss–Legendre nodes and weights on [−1, 1] by Newton's method on P_n (Numerical Recipes
  * gauleg); n <= MAX_ORDER. */
@@ -34,16 +40,16 @@ static void gauss_legendre(int n, double *x, double *w)
 }
 
 /* Sorted, de-duplicated breakpoints in [lo, hi]: the ends, each `centre ± π·2^-k` for
- * k = 1..FIRST_PANEL_EXP (panels shrinking geometrically toward the lobe), and `extra`. */
+ * k = 1..panel_exp (panels shrinking geometrically toward the lobe), and `extra`. */
 static int breakpoints(double lo, double hi, double centre, const double *extra, int n_extra,
-                       double *out)
+                       int panel_exp, double *out)
 {
     int n = 0;
     out[n++] = lo;
     out[n++] = hi;
     for (int i = 0; i < n_extra; i++)
         out[n++] = extra[i];
-    for (int k = 1; k <= FIRST_PANEL_EXP; k++) {
+    for (int k = 1; k <= panel_exp; k++) {
         out[n++] = centre - pi * ldexp(1.0, -k);
         out[n++] = centre + pi * ldexp(1.0, -k);
     }
@@ -82,19 +88,46 @@ static int composite_nodes(const double *bp, int n_bp, int order, double *node, 
     return n;
 }
 
-enum { MAX_BREAKS = 2 * FIRST_PANEL_EXP + 8, MAX_NODES = MAX_BREAKS * MAX_ORDER };
+enum { MAX_BREAKS = 2 * MAX_PANEL_EXP + 8, MAX_NODES = MAX_BREAKS * MAX_ORDER };
+
+/* The angular width of the specular lobe about the mirror direction (1/e of its peak):
+ * √(2/m) for Phong's cos^m α_r, 2√(2/m) for Blinn-Phong's cos^m θ_h (θ_h is half the angle to
+ * the mirror direction), 2α for Ward and the microfacet models (α floored as they floor it);
+ * π for the models without a lobe. */
+static double lobe_width(const sc_brdf *b)
+{
+    double alpha = fmax(fmin(b->ax, b->ay), 1e-4); /* SC_ALPHA_FLOOR */
+    switch (b->kind) {
+    case SC_BRDF_PHONG: return b->m > 2.0 ? sqrt(2.0 / b->m) : pi;
+    case SC_BRDF_BLINN_PHONG: return b->m > 8.0 ? 2.0 * sqrt(2.0 / b->m) : pi;
+    case SC_BRDF_WARD:
+    case SC_BRDF_COOK_TORRANCE: return fmin(2.0 * alpha, pi);
+    default: return pi;
+    }
+}
+
+/* The K of the panels π·2^-k that resolve a lobe of width w >= MIN_LOBE_WIDTH: π·2^-K <= w/8. */
+static int panel_exponent(double w)
+{
+    int k = (int)ceil(log2(8.0 * pi / fmax(w, MIN_LOBE_WIDTH)));
+    return k < MIN_PANEL_EXP ? MIN_PANEL_EXP : k > MAX_PANEL_EXP ? MAX_PANEL_EXP : k;
+}
 
 /* ∫ over the upper hemisphere of f(l, v) cos θ_o dω in (θ_o, φ_o), with panels refined
  * toward the mirror direction (θ_i, π) and breakpoints at θ_i and φ = π/2, 3π/2 (the kinks of
  * the Oren–Nayar max terms); the horizon θ_o = π/2 is an end, not a kink. */
 static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], double theta_i,
-                      int order, double out[3])
+                      int order, int panel_exp, double out[3])
 {
-    double th[MAX_NODES], tw[MAX_NODES], ph[MAX_NODES], pw[MAX_NODES]; /* 32 KB: thread-safe */
+    double th[MAX_NODES], tw[MAX_NODES], ph[MAX_NODES], pw[MAX_NODES]; /* 99 KB: thread-safe */
     double bp[MAX_BREAKS];
     const double phi_kinks[2] = {pi / 2.0, 1.5 * pi};
-    int nt = composite_nodes(bp, breakpoints(0.0, pi / 2.0, theta_i, NULL, 0, bp), order, th, tw);
-    int np = composite_nodes(bp, breakpoints(0.0, 2.0 * pi, pi, phi_kinks, 2, bp), order, ph, pw);
+    /* where cos θ_o falls below the floor of the divisions by it (brdf.h): a kink */
+    const double floor_kink[1] = {acos(1e-6)};
+    int nt = composite_nodes(bp, breakpoints(0.0, pi / 2.0, theta_i, floor_kink, 1, panel_exp, bp),
+                             order, th, tw);
+    int np = composite_nodes(bp, breakpoints(0.0, 2.0 * pi, pi, phi_kinks, 2, panel_exp, bp),
+                             order, ph, pw);
     memset(out, 0, 3 * sizeof *out);
     for (int i = 0; i < nt; i++) {
         double st = sin(th[i]), ct = cos(th[i]);
@@ -109,7 +142,7 @@ static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], do
     }
 }
 
-void sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result *out)
+int sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result *out)
 {
     if (order < 2 || order > MAX_ORDER)
         order = 16;
@@ -118,10 +151,17 @@ void sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result
     sc_frame_make(n, t, &f);
     double th = theta_i_deg * pi / 180.0;
     double l[3] = {sin(th), 0.0, cos(th)}, coarse[3];
-    integrate(b, &f, l, th, order, out->albedo);
-    integrate(b, &f, l, th, order / 2 > 1 ? order / 2 : 2, coarse);
+    double width = lobe_width(b);
+    int resolved = width >= MIN_LOBE_WIDTH, panel_exp = panel_exponent(width);
+    integrate(b, &f, l, th, order, panel_exp, out->albedo);
+    integrate(b, &f, l, th, order / 2 > 1 ? order / 2 : 2, panel_exp, coarse);
+    /* plus the staircase of the lobe as double evaluates it: cos^m θ with m ~ 8/width²
+     * carries a relative rounding error up to m·2^-53 (see MIN_LOBE_WIDTH) */
+    double staircase = 8.0 * 0x1p-53 / (width * width);
     for (int c = 0; c < 3; c++)
-        out->error[c] = fabs(out->albedo[c] - coarse[c]);
+        out->error[c] = resolved ? fabs(out->albedo[c] - coarse[c]) + staircase * out->albedo[c]
+                                 : INFINITY;
+    return resolved ? 0 : -1;
 }
 
 double sc_reciprocity_error(const sc_brdf *b, double worst_l[3], double worst_v[3])

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "brdf/brdf_internal.h"
+#include "shadecalc/light.h"
 
 typedef struct {
     double ax, ay;
@@ -30,8 +31,8 @@ static double ndf(sc_prec p, const sc_brdf *b, const brdf_geometry *g, roughness
 {
     double ch = g->cos_h, ch2 = Q(ch * ch), s2 = slope2(p, g->frame, g->h, a);
     double pa = Q(Q(SC_PI * a.ax) * a.ay);
-    if (ch <= 0.0)
-        return 0.0;
+    if (ch <= 0.0 || isinf(pa))
+        return 0.0; /* π α_x α_y beyond the precision: the limit α → ∞, 0 (not inf·0) */
     if (b->D == SC_D_BECKMANN) { /* exp(−s²/cos²θ_h) / (π α_x α_y cos⁴θ_h) */
         double e = s2 == 0.0 ? 1.0 : sc_p_exp(p, Q(-Q(s2 / ch2)));
         return e == 0.0 ? 0.0 : Q(e / Q(pa * Q(ch2 * ch2)));
@@ -57,12 +58,10 @@ static double smith_lambda(sc_prec p, const sc_brdf *b, const sc_frame *f, const
 
 static double masking(sc_prec p, const sc_brdf *b, const brdf_geometry *g, roughness a)
 {
-    if (b->G == SC_G_VCAVITY) { /* min(1, 2 n·h n·v / v·h, 2 n·h n·l / v·h) */
-        double vh = sc_cos_floor(sc_p_dot(p, g->v, g->h, 3));
-        double k = Q(Q(2.0 * g->cos_h) / vh);
-        double gv = Q(k * g->cos_o), gl = Q(k * g->cos_i);
-        double m = gv < gl ? gv : gl;
-        return m < 1.0 ? m : 1.0;
+    if (b->G == SC_G_VCAVITY) { /* min(1, 2 n·h min(n·v, n·l) / v·h), v·h not floored */
+        double vh = sc_p_dot(p, g->v, g->h, 3);
+        double m = Q(Q(2.0 * g->cos_h) * (g->cos_o < g->cos_i ? g->cos_o : g->cos_i));
+        return m >= vh ? 1.0 : Q(m / vh); /* m >= 0, so v·h > 0 in the division */
     }
     double ll = smith_lambda(p, b, g->frame, g->l, a), lv = smith_lambda(p, b, g->frame, g->v, a);
     if (b->G == SC_G_SMITH_CORRELATED)
@@ -70,11 +69,12 @@ static double masking(sc_prec p, const sc_brdf *b, const brdf_geometry *g, rough
     return Q(Q(1.0 / Q(1.0 + ll)) * Q(1.0 / Q(1.0 + lv)));
 }
 
-/* Exact unpolarized dielectric Fresnel (pbrt FrDielectric), 1 on total internal reflection. */
+/* Exact unpolarized dielectric Fresnel (pbrt FrDielectric), 1 on total internal reflection —
+ * also where η² underflows to 0 (0/0 at normal incidence), the limit η → 0 for every angle. */
 static double fresnel_exact(sc_prec p, double eta, double c)
 {
     double sin2_t = Q(Q(1.0 - Q(c * c)) / Q(eta * eta));
-    if (sin2_t >= 1.0)
+    if (!(sin2_t < 1.0))
         return 1.0;
     double cos_t = sc_p_sqrt(p, Q(1.0 - sin2_t));
     double ec = Q(eta * c), et = Q(eta * cos_t);
@@ -97,17 +97,17 @@ void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
                            sc_brdf_terms *out)
 {
     sc_scale3(p, b->diff, Q(1.0 / SC_PI), out->diffuse);
-    roughness a = {Q(b->ax > SC_ALPHA_FLOOR ? b->ax : SC_ALPHA_FLOOR),
-                   Q(b->ay > SC_ALPHA_FLOOR ? b->ay : SC_ALPHA_FLOOR)};
+    roughness a = {sc_alpha_floor(p, b->ax), sc_alpha_floor(p, b->ay)};
     out->D = ndf(p, b, g, a);
     out->G = masking(p, b, g, a);
     fresnel(p, b, g, out->F);
-    double dg = Q(out->D * out->G);
+    /* D = inf where cos⁴θ_h underflows meets G = 0 at grazing angles: 0, not NaN */
+    double dg = sc_mul_reach(p, out->D, out->G);
     if (dg == 0.0)
         return; /* D or G vanished: no 0/0 where the cosines' product underflows */
     dg = Q(dg / Q(Q(4.0 * sc_cos_floor(g->cos_i)) * sc_cos_floor(g->cos_o)));
     if (b->form == SC_CT_1982)
         dg = Q(4.0 * dg);
     for (int k = 0; k < 3; k++)
-        out->specular[k] = Q(Q(dg * out->F[k]) * Q(b->spec[k]));
+        out->specular[k] = sc_mul_reach(p, sc_mul_reach(p, dg, out->F[k]), Q(b->spec[k]));
 }

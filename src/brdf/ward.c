@@ -2,10 +2,14 @@
  * Dür (2010) (reference §9). With the unnormalized h_u = l + v:
  *   E = exp(−[(h_u·t/α_x)² + (h_u·b/α_y)²] / (h_u·n)²)
  *   1992: E / (4π α_x α_y √(cos θ_i cos θ_o))     duer: E / (4π α_x α_y cos θ_i cos θ_o)
- *   gmd:  E (h_u·h_u) / (π α_x α_y (h_u·n)^4)
+ *   gmd:  E (h_u·h_u) / (π α_x α_y (h_u·n)^4)   (no floor: E bounds it at grazing angles)
  * The exponent is evaluated first and E = 0 returns at once, so exp(−∞) never multiplies an
- * infinite prefactor (reference §9 pitfalls). */
+ * infinite prefactor (reference §9 pitfalls); a denominator whose factors overflow and underflow
+ * (mediump 4π α_x α_y = inf, cos θ_i cos θ_o = 0) is 0, so f is inf, not NaN. */
+#include <math.h>
+
 #include "brdf/brdf_internal.h"
+#include "shadecalc/light.h"
 
 static double ward_exponential(sc_prec p, const double hu[3], const sc_frame *f, double ax,
                                double ay)
@@ -24,28 +28,28 @@ static double ward_denominator(sc_prec p, const sc_brdf *b, const brdf_geometry 
     double ci = sc_cos_floor(g->cos_i), co = sc_cos_floor(g->cos_o);
     double axy = Q(ax * ay);
     switch (b->form) {
-    case SC_WARD_DUER: return Q(Q(4.0 * SC_PI * axy) * Q(ci * co));
+    case SC_WARD_DUER: return sc_mul_reach(p, Q(4.0 * SC_PI * axy), Q(ci * co));
     case SC_WARD_GMD: {
-        /* (h_u·n)^4 / (h_u·h_u) = 4 cos^4 θ_h cos^2 θ_d; floored like the cosines */
-        double hn = sc_p_dot(p, hu, g->frame->n, 3), hh = sc_p_dot(p, hu, hu, 3);
-        double hn2 = Q(hn * hn);
-        return Q(Q(SC_PI * axy) * sc_cos_floor(Q(Q(hn2 * hn2) / hh)));
+        /* (h_u·n)^4 / (h_u·h_u) = (h_u·n)² cos²θ_h with cos θ_h from the unit h: not floored
+         * (h_u·n = cos θ_i + cos θ_o > 0 here), and no 0/0 where h_u·h_u underflows; it is 0
+         * only where the exact value overflows the precision too */
+        double hn = sc_p_dot(p, hu, g->frame->n, 3);
+        return sc_mul_reach(p, Q(SC_PI * axy), Q(Q(hn * hn) * Q(g->cos_h * g->cos_h)));
     }
-    default: return Q(Q(4.0 * SC_PI * axy) * sc_p_sqrt(p, Q(ci * co)));
+    default: return sc_mul_reach(p, Q(4.0 * SC_PI * axy), sc_p_sqrt(p, Q(ci * co)));
     }
 }
 
 void sc_brdf_ward(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out)
 {
     sc_scale3(p, b->diff, Q(1.0 / SC_PI), out->diffuse);
-    double ax = Q(b->ax > SC_ALPHA_FLOOR ? b->ax : SC_ALPHA_FLOOR);
-    double ay = Q(b->ay > SC_ALPHA_FLOOR ? b->ay : SC_ALPHA_FLOOR);
+    double ax = sc_alpha_floor(p, b->ax), ay = sc_alpha_floor(p, b->ay);
     double hu[3];
     for (int c = 0; c < 3; c++)
         hu[c] = sc_p_add(p, g->l[c], g->v[c]);
     double e = ward_exponential(p, hu, g->frame, ax, ay);
     out->D = e;
-    if (e == 0.0)
-        return;
+    if (e == 0.0 || isinf(Q(ax * ay)))
+        return; /* α_x α_y beyond the precision (mediump α = 6e4): the limit α → ∞, 0 */
     sc_scale3(p, b->spec, Q(e / ward_denominator(p, b, g, hu, ax, ay)), out->specular);
 }

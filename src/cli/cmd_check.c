@@ -74,7 +74,9 @@ static void print_table(const char *spec, const check_options *o, const check_re
                a->albedo[2], max3(a->error));
     }
     printf("max albedo %.6f at theta_i = %g: %s\n", r->max_albedo, r->max_at,
-           exceeds_one(r) ? "EXCEEDS 1 (not energy conserving)" : "<= 1 (energy conserving)");
+           isinf(r->max_error) ? "UNRESOLVED (a lobe narrower than the quadrature resolves)"
+           : exceeds_one(r)    ? "EXCEEDS 1 (not energy conserving)"
+                               : "<= 1 (energy conserving)");
     printf("reciprocity error %.3g: %s\n\n", r->reciprocity,
            reciprocal(r) ? "reciprocal" : "NOT RECIPROCAL");
 }

@@ -351,7 +351,7 @@ static int complete_setup(shade_setup *s, const render_options *o)
         status = setup_add_light(s, default_light, "");
     if (status == SC_EXIT_OK && !s->have_model)
         status = setup_set_model(s, o->compare ? compare_brdf : default_brdf, "");
-    return status;
+    return status == SC_EXIT_OK ? setup_check_range(s, o->prec) : status;
 }
 
 /* ---- meshes ---- */
@@ -464,6 +464,22 @@ static int draw(sc_render_params *rp, const char *label, sc_framebuffer *fb, dou
 
 /* ---- one image ---- */
 
+/* A warning if colours overflow: inf in the precision, or beyond half's 65504 in a half EXR. */
+static void warn_overflow(const sc_framebuffer *fb, const render_options *o)
+{
+    double largest = o->exr_type == SC_PIXEL_HALF ? 65504.0 : HUGE_VAL;
+    long count = 0;
+    for (size_t i = 0; i < (size_t)fb->width * (size_t)fb->height; i++)
+        for (int c = 0; c < 3; c++)
+            if (fabs(fb->rgba[4 * i + c]) > largest || isinf(fb->rgba[4 * i + c])) {
+                count++;
+                break;
+            }
+    if (count)
+        sc_warning("render: %ld pixels overflow to inf (beyond %s)", count,
+                   o->exr_type == SC_PIXEL_HALF ? "half's 65504" : "the float range");
+}
+
 static int render_one(const render_options *o, const shade_setup *s, const sc_scene *scene)
 {
     sc_surface *surface = NULL;
@@ -489,8 +505,10 @@ static int render_one(const render_options *o, const shade_setup *s, const sc_sc
     }
     if (status == SC_EXIT_OK)
         status = draw(&rp, sc_shading_name(o->shading), &fb, &seconds);
-    if (status == SC_EXIT_OK)
+    if (status == SC_EXIT_OK) {
+        warn_overflow(&fb, o);
         status = write_image(&fb, o, o->output, sc_shading_name(o->shading));
+    }
     sc_framebuffer_free(&fb);
     sc_mesh_free(&mesh);
     sc_surface_free(surface);

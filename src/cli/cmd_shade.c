@@ -1,5 +1,6 @@
 /* shadecalc shade — one value of the shading equation (SPEC §6) from the shell. */
 #include <getopt.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -296,12 +297,16 @@ static int run(int argc, char **argv)
         status = SC_EXIT_USAGE;
     }
     if (status == SC_EXIT_OK)
+        status = setup_check_range(s, o.prec);
+    if (status == SC_EXIT_OK)
         status = setup_point(s, &at);
     if (status == SC_EXIT_OK) {
         sc_light_terms terms[SETUP_MAX_LIGHTS];
         sc_scene scene = {s->lights, s->n_lights, s->model, {s->ambient[0], s->ambient[1], s->ambient[2]}};
         sc_shade_result r = {.per_light = terms};
         sc_shade(o.prec, &scene, &at, &r);
+        if (isinf(r.L[0]) || isinf(r.L[1]) || isinf(r.L[2]))
+            sc_warning("shade: L_o overflows the %s range: inf", sc_prec_name(o.prec));
         if (o.format == FMT_TEXT)
             print_text(s, &r, &o);
         else if (o.format == FMT_JSON)

@@ -189,3 +189,22 @@ int setup_point(const shade_setup *s, sc_shade_point *out)
     }
     return SC_EXIT_OK;
 }
+
+int setup_check_range(const shade_setup *s, sc_prec p)
+{
+    char msg[160];
+    for (int k = 0; k < s->n_lights; k++)
+        if (sc_light_check_range(p, &s->lights[k], msg, sizeof msg) < 0) {
+            sc_error("light %d: %s", k + 1, msg);
+            return SC_EXIT_USAGE;
+        }
+    const sc_param point[] = {{"emission", s->model.emission, 3}, {"--ambient", s->ambient, 3},
+                              {"--n", s->n, 3}, {"--v", s->v, 3}, {"--p", s->p, 3},
+                              {"--eye", s->eye, 3}, {"--tangent", s->tangent, 3}};
+    if (sc_brdf_check_range(p, &s->model.brdf, msg, sizeof msg) < 0 ||
+        sc_params_in_range(p, point, (int)(sizeof point / sizeof point[0]), msg, sizeof msg) < 0) {
+        sc_error("%s", msg);
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}

@@ -35,4 +35,8 @@ int setup_load_file(shade_setup *s, const char *path);
  * vector or a tangent parallel to n. */
 int setup_point(const shade_setup *s, sc_shade_point *out);
 
+/* USAGE (after the error) if a number of the setup is beyond the range of precision p
+ * ("light 1: I=1e+39: beyond the highp range ..."): it would round to inf. */
+int setup_check_range(const shade_setup *s, sc_prec p);
+
 #endif

@@ -124,7 +124,11 @@ static int update_specs(const shade_plan *s, worker_state *w, const double *vars
             continue;
         int bad = t->light >= 0 ? sc_light_parse(text, &w->lights[t->light], why, sizeof why)
                                 : sc_model_parse(text, &w->model, why, sizeof why);
-        if (bad < 0) { /* an ignored key was reported when the setup was built */
+        if (bad >= 0 && /* a value beyond the precision would round to inf: never NaN */
+            (t->light >= 0 ? sc_light_check_range(s->prec, &w->lights[t->light], why, sizeof why)
+                           : sc_brdf_check_range(s->prec, &w->model.brdf, why, sizeof why)) < 0)
+            bad = -1;
+        if (bad < 0) { /* an ignored key (bad = 1) was reported when the setup was built */
             w->last[i][0] = '\0';
             snprintf(err, errsize, "'%s': %s", text, why);
             return -1;
@@ -297,6 +301,8 @@ int sweep_shade_plan(const sweep_setup_args *a, const sc_sweep_grid *g, sc_prec 
     s->brdf_only = s->setup.n_lights == 0;
     if (status == SC_EXIT_OK)
         status = check_angles(s);
+    if (status == SC_EXIT_OK)
+        status = setup_check_range(&s->setup, p);
     if (status == SC_EXIT_OK)
         status = setup_point(&s->setup, &s->at);
     if (status == SC_EXIT_OK && make_workers(s) < 0) {

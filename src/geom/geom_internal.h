@@ -29,4 +29,9 @@ static inline sc_dvec3 sc_dvec3_from(const double *a)
     return (sc_dvec3){a[0], a[1], a[2]};
 }
 
+/* v·2^-k, k the binary exponent of its largest |component| (exact): the largest component in
+ * [1, 2), so that a cross product or a squared length of such vectors neither overflows nor
+ * underflows. v itself if it is zero or not finite. */
+sc_dvec3 sc_dvec3_unit_scaled(sc_dvec3 v);
+
 #endif

@@ -6,20 +6,48 @@
 #include "geom/geom_internal.h"
 #include "shadecalc/mesh.h"
 
-/* (b − a) × (c − a) (SPEC §7); 1 if the triangle is degenerate: the cross product is within its
- * rounding error 4ε‖b − a‖‖c − a‖ of zero, or not finite. */
-static int face_cross(sc_dvec3 a, sc_dvec3 b, sc_dvec3 c, sc_dvec3 *cross)
+static double max_abs(sc_dvec3 v) { return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z))); }
+
+/* The binary exponent k of big (0 if big is 0 or not finite): v·2^-k brings big into [1, 2). */
+static int unit_exponent(double big) { return big > 0.0 && isfinite(big) ? ilogb(big) : 0; }
+
+/* v·2^-k, exact (ldexp per component: 2^-k alone overflows for a subnormal big). */
+static sc_dvec3 times_pow2(sc_dvec3 v, int minus_k)
 {
-    sc_dvec3 e1 = sc_dvec3_sub(b, a), e2 = sc_dvec3_sub(c, a);
+    return (sc_dvec3){ldexp(v.x, minus_k), ldexp(v.y, minus_k), ldexp(v.z, minus_k)};
+}
+
+sc_dvec3 sc_dvec3_unit_scaled(sc_dvec3 v) { return times_pow2(v, -unit_exponent(max_abs(v))); }
+
+/* e1 × e2; 1 if the triangle is degenerate: the cross product is within its rounding error
+ * 4ε‖e1‖‖e2‖ of zero, or not finite. */
+static int edge_cross(sc_dvec3 e1, sc_dvec3 e2, sc_dvec3 *cross)
+{
     *cross = sc_dvec3_cross(e1, e2);
     double len = sc_dvec3_length(*cross);
     return !(len > 4.0 * 0x1p-53 * sc_dvec3_length(e1) * sc_dvec3_length(e2)) || !isfinite(len);
 }
 
+/* (b − a) × (c − a) (SPEC §7) of a mesh's float positions: in double it neither overflows nor
+ * underflows (|x| <= 3.4e38 and >= 1.4e-45), and its length is the area weight. */
+static int face_cross(sc_dvec3 a, sc_dvec3 b, sc_dvec3 c, sc_dvec3 *cross)
+{
+    return edge_cross(sc_dvec3_sub(b, a), sc_dvec3_sub(c, a), cross);
+}
+
+/* A triangle of any doubles: the corners scaled by a common power of two (no overflow in the
+ * differences), then each edge scaled to unit size (no overflow or underflow in the cross
+ * product: the corners 1e308 or 1e-200 apart are not degenerate). */
 void sc_triangle_normal(const double a[3], const double b[3], const double c[3], double n[3])
 {
+    sc_dvec3 pa = sc_dvec3_from(a), pb = sc_dvec3_from(b), pc = sc_dvec3_from(c);
+    int k = unit_exponent(fmax(max_abs(pa), fmax(max_abs(pb), max_abs(pc))));
+    pa = times_pow2(pa, -k);
+    pb = times_pow2(pb, -k);
+    pc = times_pow2(pc, -k);
     sc_dvec3 cross, unit = {0.0, 0.0, 0.0};
-    if (!face_cross(sc_dvec3_from(a), sc_dvec3_from(b), sc_dvec3_from(c), &cross))
+    if (!edge_cross(sc_dvec3_unit_scaled(sc_dvec3_sub(pb, pa)),
+                    sc_dvec3_unit_scaled(sc_dvec3_sub(pc, pa)), &cross))
         unit = sc_dvec3_normalize(cross);
     n[0] = unit.x;
     n[1] = unit.y;

@@ -106,13 +106,31 @@ static void point_and_derivatives(const sc_surface *s, double u, double v, sc_su
  * zero, not finite, or within its rounding error 8ε‖∂S/∂u‖‖∂S/∂v‖ (the directions parallel). */
 static int unit_cross(const double *a, const double *b, double *n)
 {
-    sc_dvec3 da = sc_dvec3_from(a), db = sc_dvec3_from(b), c = sc_dvec3_cross(da, db);
+    /* each scaled to unit size first: a user surface scaled by 1e200 has derivatives whose
+     * cross product would overflow (1e-200: underflow) */
+    sc_dvec3 da = sc_dvec3_unit_scaled(sc_dvec3_from(a));
+    sc_dvec3 db = sc_dvec3_unit_scaled(sc_dvec3_from(b)), c = sc_dvec3_cross(da, db);
     double len = sc_dvec3_length(c),
            bound = 8.0 * 0x1p-53 * sc_dvec3_length(da) * sc_dvec3_length(db);
     if (!(len > bound) || !isfinite(len))
         return -1;
     set3(n, c.x / len, c.y / len, c.z / len);
     return 0;
+}
+
+/* The derivatives whose cross product is the normal: a built-in's of the same surface scaled by
+ * a power of two to unit size (its normal does not change; sphere r=1e308 has ∂S/∂u beyond
+ * the double range, r=1e-308 a cross product below it); a user surface's own. */
+static void normal_derivatives(const sc_surface *s, double u, double v, sc_surface_point *o)
+{
+    sc_surface unit = *s;
+    if (s->kind != SURFACE_USER) {
+        double big = fmax(fabs(s->a), fabs(s->b));
+        int k = big > 0.0 && isfinite(big) ? ilogb(big) : 0;
+        unit.a = ldexp(s->a, -k);
+        unit.b = ldexp(s->b, -k);
+    }
+    point_and_derivatives(&unit, u, v, o);
 }
 
 /* One step of δ toward ½ (down from ½ itself). */
@@ -128,7 +146,7 @@ static void fallback_normal(const sc_surface *s, double u, double v, double *n)
     static const double steps[] = {0x1p-30, 0x1p-20, 0x1p-10};
     for (int i = 0; i < 3; i++) {
         sc_surface_point q;
-        point_and_derivatives(s, toward_centre(u, steps[i]), toward_centre(v, steps[i]), &q);
+        normal_derivatives(s, toward_centre(u, steps[i]), toward_centre(v, steps[i]), &q);
         if (unit_cross(q.dpdu, q.dpdv, n) == 0)
             return;
     }
@@ -137,8 +155,10 @@ static void fallback_normal(const sc_surface *s, double u, double v, double *n)
 
 void sc_surface_eval(const sc_surface *s, double u, double v, sc_surface_point *out)
 {
+    sc_surface_point d;
     point_and_derivatives(s, u, v, out);
-    out->degenerate = unit_cross(out->dpdu, out->dpdv, out->n) != 0;
+    normal_derivatives(s, u, v, &d);
+    out->degenerate = unit_cross(d.dpdu, d.dpdv, out->n) != 0;
     if (out->degenerate)
         fallback_normal(s, u, v, out->n);
 }

@@ -2,6 +2,7 @@
  * reference §1–§2). Intermediates are rounded to the precision with Q(). */
 #include "shadecalc/light.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -25,15 +26,23 @@ static double lobe_pow(sc_prec p, double x, double y)
 
 /* ---- distance attenuation (SPEC §3) ---- */
 
+/* 1/r²; where r² overflows the precision but 1/r² may not (highp r = 1e20: 1e-40, a
+ * subnormal, not 0), r² is formed in double (r is at most the precision's largest value, so
+ * r² <= 1.2e77) and only 1/r² rounded. */
 static double inverse_square(sc_prec p, double r)
 {
     double r2 = Q(r * r);
+    if (isinf(r2) && isfinite(r))
+        return Q(1.0 / (r * r));
     return Q(1.0 / fmax(r2, denom_floor));
 }
 
+/* 1/(s_c + s_l r + s_q r²); where the sum overflows the precision, formed in double. */
 static double clq(sc_prec p, const sc_atten *a, double r)
 {
     double d = Q(Q(a->sc + Q(a->sl * r)) + Q(a->sq * Q(r * r)));
+    if (isinf(d) && isfinite(r))
+        return Q(1.0 / (a->sc + a->sl * r + a->sq * r * r));
     return Q(1.0 / fmax(d, denom_floor));
 }
 
@@ -143,10 +152,79 @@ void sc_light_init(sc_light *light, sc_light_kind kind)
     light->range = HUGE_VAL;
 }
 
+static int is_zero3(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
 static void rounded3(sc_prec p, const double in[3], double out[3])
 {
     for (int c = 0; c < 3; c++)
         out[c] = Q(in[c]);
+}
+
+double sc_mul_reach(sc_prec p, double a, double b)
+{
+    return a == 0.0 || b == 0.0 ? 0.0 : sc_p_mul(p, a, b);
+}
+
+/* Whether ‖d‖² of a rounded vector d is safe in p: no overflow, and not below the smallest
+ * normal number, where the square root of an underflowed sum loses digits or becomes 0. lowp
+ * saturates instead and is left as it is. */
+static int square_is_safe(sc_prec p, const double d[3])
+{
+    static const double smallest_normal[] = {0x1p-1022, 0x1p-126, 0x1p-14, 0.0};
+    double big = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    if (p == SC_LOWP || big == 0.0 || !isfinite(big))
+        return 1;
+    double dot = sc_p_dot(p, d, d, 3);
+    return isfinite(dot) && dot >= smallest_normal[p];
+}
+
+/* ‖d‖ and d/‖d‖ in precision p for a rounded d, hypot-style: where ‖d‖² would overflow or
+ * underflow, d is first scaled by the power of two 2^-k that brings its largest component into
+ * [1, 2) (exact), and ‖d‖ is the scaled length times 2^k (inf only if ‖d‖ itself is beyond the
+ * precision's range). */
+static double length_unit(sc_prec p, const double d[3], double unit[3])
+{
+    if (square_is_safe(p, d)) {
+        double len = sc_p_length(p, d, 3);
+        if (len > 0.0)
+            sc_p_normalize(p, d, 3, unit);
+        return len;
+    }
+    int k = ilogb(fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2]))));
+    double scaled[3];
+    for (int c = 0; c < 3; c++)
+        scaled[c] = Q(ldexp(d[c], -k));
+    sc_p_normalize(p, scaled, 3, unit);
+    return Q(ldexp(sc_p_length(p, scaled, 3), k));
+}
+
+/* The unit vector of a light's direction (a uniform the host prepares): where its rounded
+ * components vanish in p or their squared length would over/underflow, the direction is first
+ * scaled by a power of two in double (dir=1e-30,0,1e-30 in mediump: (0.707, 0, 0.707)). */
+static void unit_direction(sc_prec p, const double dir[3], double out[3])
+{
+    double d[3];
+    rounded3(p, dir, d);
+    if (is_zero3(d) || !square_is_safe(p, d)) {
+        int k = ilogb(fmax(fabs(dir[0]), fmax(fabs(dir[1]), fabs(dir[2]))));
+        for (int c = 0; c < 3; c++)
+            d[c] = Q(ldexp(dir[c], -k));
+    }
+    length_unit(p, d, out);
+}
+
+/* p_L − p_S in precision p, halved (and *twice = 1) where a difference overflows: the
+ * direction survives and the distance is twice the halved length. */
+static void light_offset(sc_prec p, const double pos_l[3], const double pos_s[3], double d[3],
+                         int *twice)
+{
+    *twice = 0;
+    for (int c = 0; c < 3; c++) {
+        d[c] = sc_p_sub(p, Q(pos_l[c]), Q(pos_s[c]));
+        *twice |= isinf(d[c]) && isfinite(Q(pos_l[c])) && isfinite(Q(pos_s[c]));
+    }
+    for (int c = 0; *twice && c < 3; c++)
+        d[c] = sc_p_sub(p, Q(0.5 * Q(pos_l[c])), Q(0.5 * Q(pos_s[c])));
 }
 
 void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const double n[3],
@@ -155,28 +233,26 @@ void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const 
     *out = (sc_light_sample){.f_d = 1.0, .spot = 1.0};
     double d[3];
     if (light->kind == SC_LIGHT_DIRECTIONAL) {
-        rounded3(p, light->dir, d);
-        sc_p_normalize(p, d, 3, out->l);
+        unit_direction(p, light->dir, out->l);
     } else {
-        for (int c = 0; c < 3; c++)
-            d[c] = sc_p_sub(p, Q(light->pos[c]), Q(pos[c]));
-        out->r = sc_p_length(p, d, 3);
-        if (out->r > 0.0)
-            sc_p_normalize(p, d, 3, out->l);
-        else
+        int twice;
+        light_offset(p, light->pos, pos, d, &twice);
+        out->r = length_unit(p, d, out->l);
+        if (twice)
+            out->r = Q(2.0 * out->r);
+        if (!(out->r > 0.0))
             rounded3(p, n, out->l); /* on the light: l = n (SPEC §2, r = 0) */
         out->f_d = sc_atten_eval(p, &light->atten, out->r);
     }
     if (light->kind == SC_LIGHT_SPOT) {
         double s[3], minus_l[3] = {-out->l[0], -out->l[1], -out->l[2]};
-        rounded3(p, light->dir, d);
-        sc_p_normalize(p, d, 3, s);
+        unit_direction(p, light->dir, s);
         out->cos_s = sc_p_dot(p, s, minus_l, 3);
         out->spot = sc_spot_eval(p, &light->spot, out->cos_s);
     }
-    double scale = Q(out->f_d * out->spot);
+    double scale = sc_mul_reach(p, out->f_d, out->spot);
     for (int c = 0; c < 3; c++)
-        out->E[c] = Q(Q(light->intensity[c]) * scale);
+        out->E[c] = sc_mul_reach(p, Q(light->intensity[c]), scale);
 }
 
 /* ---- validation ---- */
@@ -247,7 +323,31 @@ static int validate_spot(const sc_spot *s, char *msg, size_t size)
     return 0;
 }
 
-static int is_zero3(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+int sc_params_in_range(sc_prec p, const sc_param *params, int count, char *msg, size_t size)
+{
+    static const double largest[] = {DBL_MAX, FLT_MAX, 65504.0, SC_LOWP_MAX};
+    for (int i = 0; i < count; i++)
+        for (int k = 0; k < params[i].n; k++)
+            if (isinf(sc_round(p, params[i].v[k]))) {
+                snprintf(msg, size, "%s=%g: beyond the %s range (|x| <= %.8g)", params[i].key,
+                         params[i].v[k], sc_prec_name(p), largest[p]);
+                return -1;
+            }
+    return 0;
+}
+
+int sc_light_check_range(sc_prec p, const sc_light *l, char *msg, size_t size)
+{
+    const sc_param params[] = {
+        {"I", l->intensity, 3},           {"amb", l->ambient, 3},       {"diff", l->diffuse, 3},
+        {"spec", l->specular, 3},         {"dir", l->dir, 3},           {"pos", l->pos, 3},
+        {"sc", &l->atten.sc, 1},          {"sl", &l->atten.sl, 1},      {"sq", &l->atten.sq, 1},
+        {"rstart", &l->atten.r_start, 1}, {"rend", &l->atten.r_end, 1}, {"fmax", &l->atten.f_max, 1},
+        {"fc", &l->atten.f_c, 1},         {"rc", &l->atten.r_c, 1},     {"se", &l->atten.s_e, 1},
+        {"rmax", &l->atten.r_max, 1},     {"exp", &l->spot.exponent, 1}};
+    return sc_params_in_range(p, params, (int)(sizeof params / sizeof params[0]), msg, size);
+}
+
 
 int sc_light_validate(const sc_light *light, char *msg, size_t size)
 {

@@ -149,11 +149,10 @@ void render_shader_init(render_shader *sh, const sc_scene *scene, sc_prec prec)
 void render_shade_span(const render_shader *sh, const double eye[3], int n,
                        const render_shade_input *in, float *rgb)
 {
-    if (sh->batch) {
+    if (sh->batch)
         for (int i = 0; i < n; i += CHUNK)
             shade_chunk(&sh->bs, eye, n - i < CHUNK ? n - i : CHUNK, in + i, rgb + 3 * i);
-        return;
-    }
-    for (int i = 0; i < n; i++)
-        shade_one(sh->scene, sh->prec, eye, &in[i], rgb + 3 * i);
+    for (int i = 0; i < n; i++) /* the kernel's 0·inf where its float sums overflow: sc_shade */
+        if (!sh->batch || isnan(rgb[3 * i]) || isnan(rgb[3 * i + 1]) || isnan(rgb[3 * i + 2]))
+            shade_one(sh->scene, sh->prec, eye, &in[i], rgb + 3 * i);
 }

@@ -47,7 +47,7 @@ static void ads_light(sc_prec p, const sc_scene *s, const sc_light *light,
 {
     const sc_brdf *mat = &s->model.brdf;
     sc_light_eval(p, light, at->pos, at->frame.n, &t->light);
-    double scale = Q(t->light.f_d * t->light.spot), cd[3], cs[3];
+    double scale = sc_mul_reach(p, t->light.f_d, t->light.spot), cd[3], cs[3];
     double cos_i = sc_p_dot(p, at->frame.n, t->light.l, 3);
     t->brdf.cos_i = cos_i;
     double lobe = 0.0;
@@ -58,8 +58,9 @@ static void ads_light(sc_prec p, const sc_scene *s, const sc_light *light,
     sc_mul3(p, cd, mat->diff, t->brdf.diffuse);
     sc_mul3(p, cs, mat->spec, t->brdf.specular);
     for (int c = 0; c < 3; c++) {
-        double d = Q(t->brdf.diffuse[c] * fmax(cos_i, 0.0)), sp = Q(t->brdf.specular[c] * lobe);
-        t->contribution[c] = Q(scale * Q(d + sp));
+        double d = sc_mul_reach(p, t->brdf.diffuse[c], fmax(cos_i, 0.0));
+        double sp = sc_mul_reach(p, t->brdf.specular[c], lobe);
+        t->contribution[c] = sc_mul_reach(p, scale, Q(d + sp));
     }
     sc_mul3(p, mat->amb, light->ambient, t->ambient);
     sc_add3(p, t->contribution, t->ambient);
@@ -87,7 +88,7 @@ static void fixed_function_light(sc_prec p, const sc_model *m, const sc_light *l
                                  double spec[3])
 {
     sc_light_eval(p, light, at->pos, at->frame.n, &t->light);
-    double scale = Q(t->light.f_d * t->light.spot);
+    double scale = sc_mul_reach(p, t->light.f_d, t->light.spot);
     if (m->kind == SC_MODEL_D3D9 && light->kind != SC_LIGHT_DIRECTIONAL && t->light.r > light->range)
         scale = 0.0;
     const double *l = t->light.l, *n = at->frame.n;
@@ -106,9 +107,9 @@ static void fixed_function_light(sc_prec p, const sc_model *m, const sc_light *l
     light_colour(p, light, light->specular, colour);
     sc_mul3(p, m->brdf.spec, colour, t->brdf.specular);
     for (int c = 0; c < 3; c++) {
-        t->ambient[c] = Q(scale * t->ambient[c]);
-        double d = Q(Q(t->brdf.diffuse[c] * fmax(cos_i, 0.0)) * scale);
-        spec[c] = Q(Q(t->brdf.specular[c] * lobe) * scale);
+        t->ambient[c] = sc_mul_reach(p, scale, t->ambient[c]);
+        double d = sc_mul_reach(p, sc_mul_reach(p, t->brdf.diffuse[c], fmax(cos_i, 0.0)), scale);
+        spec[c] = sc_mul_reach(p, sc_mul_reach(p, t->brdf.specular[c], lobe), scale);
         prim[c] = Q(t->ambient[c] + d);
         t->contribution[c] = Q(prim[c] + spec[c]);
     }

@@ -26,7 +26,7 @@ void sc_model_init(sc_model *m, sc_model_kind kind)
 void sc_mul3(sc_prec p, const double a[3], const double b[3], double out[3])
 {
     for (int c = 0; c < 3; c++)
-        out[c] = sc_p_mul(p, sc_round(p, a[c]), sc_round(p, b[c]));
+        out[c] = sc_mul_reach(p, sc_round(p, a[c]), sc_round(p, b[c]));
 }
 
 void sc_add3(sc_prec p, double acc[3], const double x[3])
@@ -45,7 +45,7 @@ static void brdf_light(sc_prec p, const sc_scene *s, const sc_light *light,
     double cos_i = t->brdf.cos_i > 0.0 ? t->brdf.cos_i : 0.0, fe[3];
     sc_mul3(p, t->brdf.f, t->light.E, fe);
     for (int c = 0; c < 3; c++)
-        t->contribution[c] = sc_p_add(p, t->ambient[c], sc_p_mul(p, fe[c], cos_i));
+        t->contribution[c] = sc_p_add(p, t->ambient[c], sc_mul_reach(p, fe[c], cos_i));
 }
 
 static void shade_brdf(sc_prec p, const sc_scene *s, const sc_shade_point *at,

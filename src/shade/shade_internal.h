@@ -5,7 +5,8 @@
 #include "shadecalc/pmath.h"
 #include "shadecalc/shade.h"
 
-/* out = a ⊙ b and acc += x, each component rounded to p. */
+/* out = a ⊙ b and acc += x, each component rounded to p; a zero factor gives 0 even against an
+ * infinite one (sc_mul_reach). */
 void sc_mul3(sc_prec p, const double a[3], const double b[3], double out[3]);
 void sc_add3(sc_prec p, double acc[3], const double x[3]);
 

@@ -73,3 +73,10 @@ expect "bad format" 2 '' "error: normal: unknown format 'json' (text, csv)" -- n
 expect "unknown option" 2 '' '~error: normal:' -- normal --bogus
 expect "extra argument" 2 '' "error: normal: unexpected argument 'x'" -- normal -s sphere -u 0,0 x
 expect "help" 0 '~usage: shadecalc normal --surface SPEC' '' -- normal --help
+
+# size does not change a normal (issue 11 §7): the closed form (−0.25, 0.7694208843, −0.5877852523)
+expect "sphere r=1e308" 0 '~n              (-0.25, 0.7694208843, -0.5877852523)' '' -- normal --surface 'sphere r=1e308' --uv 0.3,0.3
+expect "sphere r=1e-308" 0 '~n              (-0.25, 0.7694208843, -0.5877852523)' '' -- normal --surface 'sphere r=1e-308' --uv 0.3,0.3
+expect "user surface 1e200" 0 '~n              (0.8090169944, 0.5877852523, 0)' '' -- normal --surface 'user x=1e200*cos(6.283185307179586*u) y=1e200*sin(6.283185307179586*u) z=1e200*v' --uv 0.1,0.5
+expect "triangle 1e308" 0 '~n              (0, 0, 1)' '' -- normal --triangle 0,0,0 1e308,0,0 0,1e308,0
+expect "triangle 1e-200" 0 '~n              (0, 0, 1)' '' -- normal --triangle 0,0,0 1e-200,0,0 0,1e-200,0

@@ -63,3 +63,17 @@ expect_close "opengl directional"  1e-11 '0.97433922005 0.63433922005 0.39433922
 # reference §11: GGX + height-correlated Smith + exact Fresnel at l = dir(60,0), v = dir(30,200):
 # f = 0.0256271923424, times cos θ_i = 0.5
 expect_close "ggx general case"    1e-10 '0.0128135961712 0.0128135961712 0.0128135961712' -- shade -p double --light 'directional dir=0.8660254037844386,0,0.5' --brdf 'cook-torrance diff=0 alpha=0.3 F=exact ior=1.5' --v -0.46984631039295416,-0.17101007166283433,0.8660254037844387 --tangent 1,0,0
+
+# values beyond the precision's range (issue 11 §7): rejected naming the key, never NaN
+expect "I beyond highp"          2 '' 'error: light 1: I=1e+39: beyond the highp range (|x| <= 3.4028235e+38)' -- shade --light 'directional dir=1,0,0 I=1e39' --brdf 'blinn-phong m=32' --n 0,1,0 --v 0,1,1
+expect "I beyond mediump"        2 '' 'error: light 1: I=70000: beyond the mediump range (|x| <= 65504)' -- shade -p mediump --light 'directional dir=1,0,0 I=70000' --brdf 'blinn-phong m=32' --n 0,1,0 --v 0,1,1
+expect "alpha beyond highp"      2 '' 'error: alpha=1e+39: beyond the highp range (|x| <= 3.4028235e+38)' -- shade --light 'directional dir=0,0,1' --brdf 'cook-torrance alpha=1e39'
+expect "point beyond highp"      2 '' 'error: --p=1e+39: beyond the highp range (|x| <= 3.4028235e+38)' -- shade --light 'directional dir=0,0,1' --p 1e39,0,0
+expect "double takes 1e39"       0 '0 0 0' '' -- shade -p double --light 'directional dir=1,0,0 I=1e39' --brdf 'blinn-phong m=32' --n 0,1,0 --v 0,1,1
+# E = 3e38/(1e-2)² overflows highp: inf and a warning where the light reaches, 0 where it does not
+expect "overflow is inf"         0 'inf inf inf' 'warning: shade: L_o overflows the highp range: inf' -- shade --light 'point pos=0,0,1e-2 I=3e38' --brdf 'blinn-phong'
+expect "unlit overflow is 0"     0 '0 0 0' '' -- shade --light 'point pos=0,0,-1e-2 I=3e38' --brdf 'blinn-phong'
+# highp: r² = 2e40 overflows, 1/r² does not: E = 1e38/2e40 = 0.005, times cos θ_i/π·0.8
+expect_close "far light"         1e-5 '0.000900316316 0.000900316316 0.000900316316' -- shade --light 'point pos=1e20,0,1e20 I=1e38' --brdf 'lambert diff=0.8'
+# a direction whose squared length underflows binary32 is still normalized: l = (0.707, 0, 0.707)
+expect_close "tiny direction"    1e-6 '0.180063263 0.180063263 0.180063263' -- shade --light 'directional dir=1e-30,0,1e-30' --brdf 'lambert diff=0.8'

@@ -187,3 +187,8 @@ expect "bad yrange"         2 '' 'error: sweep: --yrange 2:1: expected LO:HI wit
 expect "too many rows"      2 '' 'error: sweep: the grid has more than 2^52 rows' -- sweep --var a=0:1:100000000 --var b=0:1:100000000 a
 expect "stray argument"     2 '' "~unexpected argument 'y'" -- sweep --var x=1 x y
 expect "help"               0 '~usage: shadecalc sweep' '' -- sweep --help
+
+# a row whose value is beyond the precision is an error naming the key, not a NaN row (issue 11 §7);
+# row 1 at l = v = n: 0.8/π + F0/(4πα²) = 0.57295780 (GGX D = 1/(πα²), G = 1)
+expect "row beyond highp" 2 'a,r,g,b
+0.1,0.57295775,0.57295775,0.57295775' "error: sweep: row 2: 'cook-torrance alpha=1e+39': alpha=1e+39: beyond the highp range (|x| <= 3.4028235e+38)" -- sweep --var a=0.1,1e39 --light 'directional dir=0,0,1' --brdf 'cook-torrance alpha=$a'

@@ -323,6 +323,43 @@ static void frame_rejects_degenerate_input(void **state)
     assert_true(f.n[2] == 1.0 && fabs(f.t[0] * f.n[0] + f.t[1] * f.n[1] + f.t[2] * f.n[2]) < 1e-15);
 }
 
+/* No undocumented clamps at grazing angles. Ward GMD at the mirror pair with n·l = n·v = c:
+ * h_u = (0, 0, 2c), f = (h_u·h_u)/(π α² (h_u·n)^4) = 1/(4π α² c²) (it was capped where
+ * (h_u·n)^4/(h_u·h_u) < 10⁻⁶: 795.8 for 19894.4 at α = 20, c = 10⁻⁴). The V-cavity G is
+ * min(1, 2 n·h n·v / v·h, 2 n·h n·l / v·h) with v·h unfloored: 1 at the mirror pair (it was
+ * 0.2 at c = 10⁻⁷, v·h floored at 10⁻⁶), and the formula off the mirror. */
+static void no_clamps_at_grazing_angles(void **state)
+{
+    (void)state;
+    const double cs[] = {1e-4, 1e-7};
+    for (int i = 0; i < 2; i++) {
+        double theta = acos(cs[i]) * 180.0 / pi, l[3], v[3];
+        dir(theta, 0, l);
+        dir(theta, 180, v);
+        double c = l[2]; /* = v[2], as dir computes it */
+        for (int alpha = 0; alpha < 2; alpha++) {
+            sc_brdf gmd = model(SC_BRDF_WARD, SC_WARD_GMD, 0, 1);
+            gmd.ax = gmd.ay = alpha ? 20.0 : 0.2;
+            double want = 1.0 / (4.0 * pi * gmd.ax * gmd.ax * c * c);
+            assert_rel(eval_at(SC_DOUBLE, &gmd, theta, 0, theta, 180).f[0], want, 1e-9);
+            assert_rel(eval_at(SC_HIGHP, &gmd, theta, 0, theta, 180).f[0], want, 1e-3);
+        }
+        sc_brdf ct = model(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER, 0, 1);
+        ct.D = SC_D_BECKMANN;
+        ct.G = SC_G_VCAVITY;
+        assert_true(eval_at(SC_DOUBLE, &ct, theta, 0, theta, 180).G == 1.0);
+        /* off the mirror: v at 60°, l grazing */
+        double v2[3], h[3];
+        dir(60, 180, v2);
+        for (int k = 0; k < 3; k++)
+            h[k] = l[k] + v2[k];
+        double len = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+        double nh = h[2] / len, vh = (v2[0] * h[0] + v2[1] * h[1] + v2[2] * h[2]) / len;
+        double g = fmin(1.0, fmin(2.0 * nh * v2[2] / vh, 2.0 * nh * l[2] / vh));
+        assert_rel(eval_at(SC_DOUBLE, &ct, theta, 0, 60, 180).G, g, 1e-12);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -334,6 +371,7 @@ int main(void)
         cmocka_unit_test(cook_torrance_worked_examples),
         cmocka_unit_test(fresnel_table),
         cmocka_unit_test(extremes_stay_finite),
+        cmocka_unit_test(no_clamps_at_grazing_angles),
         cmocka_unit_test(below_horizon_is_zero),
         cmocka_unit_test(reciprocity_on_random_directions),
         cmocka_unit_test(frame_rejects_degenerate_input),

@@ -251,6 +251,223 @@ static void point_on_the_light_is_finite(void **state)
     }
 }
 
+
+/* highp: 1/r² where r² overflows binary32 (r = 1e20: 1e-40, a subnormal) is not 0; clq too. */
+static void inverse_square_beyond_r2_overflow(void **state)
+{
+    (void)state;
+    sc_atten inv = {.kind = SC_ATTEN_INVERSE_SQUARE};
+    assert_rel(atten(SC_HIGHP, inv, 1e20), 1e-40, 1e-4);
+    sc_atten clq = {.kind = SC_ATTEN_CLQ, .sc = 1, .sl = 1, .sq = 2};
+    assert_rel(atten(SC_HIGHP, clq, 1e20), 1.0 / (1.0 + 1e20 + 2e40), 1e-4);
+    assert_rel(atten(SC_MEDIUMP, inv, 300.0), 1.0 / 90000.0, 1e-2);
+}
+
+/* Directions whose squared length underflows (or overflows) are still normalized, and a
+ * light 1e20 away still lights: E = I/r², l the unit offset. */
+static void tiny_and_huge_directions_normalize(void **state)
+{
+    (void)state;
+    const double n[3] = {0, 0, 1}, origin[3] = {0, 0, 0}, h = sqrt(0.5);
+    static const double scales[] = {1e-30, 1e-40, 1e30, 1e-300, 1e300};
+    for (int p = SC_DOUBLE; p <= SC_MEDIUMP; p++)
+        for (int i = 0; i < 5; i++) {
+            double s = scales[i];
+            if (p != SC_DOUBLE && (s < 1e-40 || s > 1e30))
+                continue; /* beyond binary32: rejected by sc_light_check_range */
+            if (p == SC_MEDIUMP && (s < 1e-7 || s > 6e4))
+                continue;
+            sc_light light;
+            sc_light_init(&light, SC_LIGHT_DIRECTIONAL);
+            light.dir[0] = light.dir[2] = s;
+            light.dir[1] = 0.0;
+            sc_light_sample out;
+            sc_light_eval((sc_prec)p, &light, origin, n, &out);
+            assert_rel(out.l[0], h, 1e-3);
+            assert_rel(out.l[2], h, 1e-3);
+        }
+    for (int p = SC_DOUBLE; p <= SC_MEDIUMP; p++) {
+        sc_light light;
+        sc_light_init(&light, SC_LIGHT_DIRECTIONAL);
+        light.dir[0] = light.dir[2] = p == SC_MEDIUMP ? 1e-5 : 1e-30;
+        sc_light_sample out;
+        sc_light_eval((sc_prec)p, &light, origin, n, &out);
+        assert_rel(out.l[2], h, 1e-3);
+    }
+    sc_light far;
+    sc_light_init(&far, SC_LIGHT_POINT);
+    far.pos[0] = far.pos[2] = 1e20;
+    far.intensity[0] = far.intensity[1] = far.intensity[2] = 1e38;
+    sc_light_sample out;
+    sc_light_eval(SC_HIGHP, &far, origin, n, &out);
+    assert_rel(out.r, 1e20 * sqrt(2.0), 1e-6);
+    assert_rel(out.l[2], h, 1e-6);
+    assert_rel(out.E[0], 1e38 / 2e40, 1e-4);
+}
+
+/* 0·∞: an intensity that overflows the precision (E = inf) on a light that does not reach the
+ * point (behind it, outside a spot cone) adds 0, not NaN; one that reaches it adds inf. */
+static void overflowed_light_that_does_not_reach_adds_zero(void **state)
+{
+    (void)state;
+    sc_light lights[2];
+    sc_light_init(&lights[0], SC_LIGHT_POINT);
+    lights[0].pos[2] = -1e-2; /* below the surface: cos θ_i < 0, E = 3e38·1e4 = inf */
+    sc_light_init(&lights[1], SC_LIGHT_SPOT);
+    lights[1].pos[2] = 1e-2;
+    lights[1].dir[2] = 1.0; /* pointing away: spot = 0 */
+    lights[1].spot.cutoff = 30.0;
+    for (int k = 0; k < 2; k++)
+        for (int c = 0; c < 3; c++)
+            lights[k].intensity[c] = 3e38;
+    sc_scene s = {.lights = lights, .n_lights = 2};
+    sc_shade_point at = {.v = {0, 0, 1}};
+    const double n[3] = {0, 0, 1};
+    sc_frame_make(n, NULL, &at.frame);
+    static const sc_model_kind gated[] = {SC_MODEL_BRDF, SC_MODEL_OPENGL}; /* by n·l > 0 */
+    for (int kind = 0; kind < 2; kind++)
+        for (int p = SC_DOUBLE; p <= SC_MEDIUMP; p++) { /* lowp: r² = 0, on the light */
+            sc_model_init(&s.model, gated[kind]);
+            s.model.clamp = 0;
+            sc_shade_result r = {.per_light = NULL};
+            sc_shade((sc_prec)p, &s, &at, &r);
+            for (int c = 0; c < 3; c++)
+                if (r.L[c] != 0.0)
+                    fail_msg("model %d prec %d: L = %g, want 0", kind, p, r.L[c]);
+        }
+    lights[0].pos[2] = 1e-2; /* above it: lit, inf in highp, never NaN */
+    sc_model_init(&s.model, SC_MODEL_BRDF);
+    s.n_lights = 1;
+    sc_shade_result r = {.per_light = NULL};
+    sc_shade(SC_HIGHP, &s, &at, &r);
+    assert_true(isinf(r.L[0]) && r.L[0] > 0);
+}
+
+/* A parameter that rounds to inf in the precision is named; lowp saturates. */
+static void range_check_names_the_key(void **state)
+{
+    (void)state;
+    sc_light light;
+    sc_light_init(&light, SC_LIGHT_DIRECTIONAL);
+    light.intensity[1] = 1e39;
+    char msg[160];
+    assert_int_equal(sc_light_check_range(SC_DOUBLE, &light, msg, sizeof msg), 0);
+    assert_int_equal(sc_light_check_range(SC_LOWP, &light, msg, sizeof msg), 0);
+    assert_int_equal(sc_light_check_range(SC_HIGHP, &light, msg, sizeof msg), -1);
+    assert_non_null(strstr(msg, "I=1e+39"));
+    light.intensity[1] = 70000;
+    assert_int_equal(sc_light_check_range(SC_HIGHP, &light, msg, sizeof msg), 0);
+    assert_int_equal(sc_light_check_range(SC_MEDIUMP, &light, msg, sizeof msg), -1);
+    assert_non_null(strstr(msg, "mediump"));
+}
+
+/* A deterministic sweep over extreme but in-range values (of every light, attenuation, spot,
+ * model and BRDF parameter, in every precision, at grazing and on-the-light points): never NaN,
+ * never negative. Before: 1135 NaN in 393 899 such evaluations (0·inf, inf/inf, inf − inf,
+ * acos rounded past π/2, α² overflowing mediump). */
+static unsigned lcg(unsigned *s) { return (*s = *s * 1103515245u + 12345u) >> 16; }
+
+static double extreme(unsigned *s, sc_prec p)
+{
+    static const double v[] = {0, 1e-320, 1e-45, 1e-30, 1e-8, 1e-4, 0.5, 1, 2, 1e4, 6e4, 1e20, 3e38, 1e300};
+    double x, lim = p == SC_HIGHP ? 3.4e38 : p == SC_MEDIUMP ? 65504 : 1e308;
+    do
+        x = v[lcg(s) % 14];
+    while (x > lim);
+    return lcg(s) % 2 ? x : -x;
+}
+
+static void random_light(unsigned *s, sc_prec p, sc_light *l)
+{
+    sc_light_init(l, (sc_light_kind)(lcg(s) % 3));
+    for (int c = 0; c < 3; c++) {
+        l->intensity[c] = fabs(extreme(s, p));
+        l->ambient[c] = fabs(extreme(s, p));
+        l->pos[c] = extreme(s, p);
+        l->dir[c] = extreme(s, p);
+    }
+    l->dir[2] = l->dir[2] == 0 ? 1 : l->dir[2];
+    sc_atten *a = &l->atten;
+    a->kind = (sc_atten_kind)(lcg(s) % 6);
+    a->sc = fabs(extreme(s, p)) + 1;
+    a->sl = fabs(extreme(s, p));
+    a->sq = fabs(extreme(s, p));
+    a->r_start = fabs(extreme(s, p));
+    a->r_end = a->r_start + fabs(extreme(s, p));
+    a->f_max = fabs(extreme(s, p)) + 1e-3;
+    a->f_c = a->f_max * (lcg(s) % 2 ? 1 : 0.5);
+    a->r_c = fabs(extreme(s, p)) + 1e-3;
+    a->s_e = fabs(extreme(s, p)) + 1e-3;
+    a->r_max = fabs(extreme(s, p)) + 1e-3;
+    l->spot.kind = (sc_spot_kind)(lcg(s) % 3);
+    l->spot.exponent = fabs(extreme(s, p));
+    l->spot.cutoff = lcg(s) % 2 ? 180 : lcg(s) % 91;
+    l->spot.inner = lcg(s) % 90;
+    l->spot.outer = l->spot.inner + lcg(s) % 90;
+}
+
+static void random_model(unsigned *s, sc_prec p, sc_model *m)
+{
+    sc_model_init(m, (sc_model_kind)(lcg(s) % 4));
+    if (m->kind == SC_MODEL_BRDF) {
+        sc_brdf_init(&m->brdf, (sc_brdf_kind)(lcg(s) % 6));
+        m->brdf.form = (int)(lcg(s) % 2);
+    }
+    sc_brdf *b = &m->brdf;
+    b->m = fabs(extreme(s, p));
+    b->ax = fabs(extreme(s, p));
+    b->ay = lcg(s) % 2 ? b->ax : fabs(extreme(s, p));
+    b->sigma = fabs(extreme(s, p)) / 60;
+    b->ior = fabs(extreme(s, p)) + 1e-300;
+    b->D = (sc_ndf)(lcg(s) % 2);
+    b->G = (sc_masking)(lcg(s) % 3);
+    b->F = (sc_fresnel)(lcg(s) % 3);
+    for (int c = 0; c < 3; c++) {
+        b->diff[c] = fabs(extreme(s, p));
+        b->spec[c] = fabs(extreme(s, p));
+        b->amb[c] = fabs(extreme(s, p));
+    }
+    m->clamp = (int)(lcg(s) % 2);
+}
+
+static void shade_never_nan_on_extremes(void **state)
+{
+    (void)state;
+    unsigned seed = 11;
+    char msg[160];
+    for (int it = 0; it < 40000; it++) {
+        sc_prec p = (sc_prec)(lcg(&seed) % 4);
+        sc_light lights[2];
+        sc_scene s = {.lights = lights, .n_lights = 2};
+        random_light(&seed, p, &lights[0]);
+        random_light(&seed, p, &lights[1]);
+        random_model(&seed, p, &s.model);
+        sc_shade_point at;
+        const double n[3] = {0, 0, 1}, t[3] = {1, 0, 0};
+        sc_frame_make(n, t, &at.frame);
+        for (int c = 0; c < 3; c++)
+            at.pos[c] = lcg(&seed) % 2 ? extreme(&seed, p) : 0.0;
+        double th = lcg(&seed) % 3 ? (lcg(&seed) % 1000) * pi / 2000.0 : pi / 2.0 - 1e-9;
+        double ph = (lcg(&seed) % 8) * pi / 4.0;
+        at.v[0] = sin(th) * cos(ph);
+        at.v[1] = sin(th) * sin(ph);
+        at.v[2] = cos(th);
+        if (sc_light_validate(&lights[0], msg, sizeof msg) < 0 ||
+            sc_light_validate(&lights[1], msg, sizeof msg) < 0 ||
+            sc_light_check_range(p, &lights[0], msg, sizeof msg) < 0 ||
+            sc_light_check_range(p, &lights[1], msg, sizeof msg) < 0 ||
+            sc_brdf_validate(&s.model.brdf, msg, sizeof msg) < 0 ||
+            sc_brdf_check_range(p, &s.model.brdf, msg, sizeof msg) < 0)
+            continue;
+        sc_shade_result r = {.per_light = NULL};
+        sc_shade(p, &s, &at, &r);
+        for (int c = 0; c < 3; c++)
+            if (!(r.L[c] >= 0.0))
+                fail_msg("iteration %d, precision %d, model %d/%d form %d: L = %g", it, p,
+                         s.model.kind, s.model.brdf.kind, s.model.brdf.form, r.L[c]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -261,6 +478,11 @@ int main(void)
         cmocka_unit_test(opengl_worked_example),
         cmocka_unit_test(shading_equation_sums_lights),
         cmocka_unit_test(point_on_the_light_is_finite),
+        cmocka_unit_test(inverse_square_beyond_r2_overflow),
+        cmocka_unit_test(tiny_and_huge_directions_normalize),
+        cmocka_unit_test(overflowed_light_that_does_not_reach_adds_zero),
+        cmocka_unit_test(range_check_names_the_key),
+        cmocka_unit_test(shade_never_nan_on_extremes),
     };
     return cmocka_run_group_tests_name("light", tests, NULL, NULL);
 }

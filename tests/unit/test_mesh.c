@@ -232,6 +232,26 @@ static void triangle_normal_is_unit_or_zero(void **state)
     assert_true(n[0] == 0 && n[1] == 0 && n[2] == 0);
 }
 
+/* Scale does not make a triangle degenerate: corners 1e308 or 1e-200 apart (the cross product
+ * of the edges would overflow or underflow), or tiny next to their distance from the origin. */
+static void triangle_normal_at_extreme_scales(void **state)
+{
+    (void)state;
+    static const double scales[] = {1e308, 1e-200, 4e-320, 1.0};
+    double n[3];
+    for (int i = 0; i < 4; i++) {
+        double s = scales[i];
+        sc_triangle_normal((double[3]){0, 0, 0}, (double[3]){s, 0, 0}, (double[3]){0, s, 0}, n);
+        assert_true(n[0] == 0 && n[1] == 0 && n[2] == 1);
+        sc_triangle_normal((double[3]){-s, -s, 0}, (double[3]){s, -s, 0}, (double[3]){0, s, s}, n);
+        /* (2s, 0, 0) × (s, 2s, s) = (0, −2s², 4s²) */
+        assert_true(fabs(n[0]) < 1e-15 && fabs(n[1] + 1.0 / sqrt(5.0)) < 1e-15 &&
+                    fabs(n[2] - 2.0 / sqrt(5.0)) < 1e-15);
+    }
+    sc_triangle_normal((double[3]){1, 0, 0}, (double[3]){1, 1e-200, 0}, (double[3]){1, 0, 1e-200}, n);
+    assert_true(n[0] == 1 && n[1] == 0 && n[2] == 0);
+}
+
 /* ---- OBJ ---- */
 
 static char tmpdir[64];
@@ -352,6 +372,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sphere_grid_has_the_lecture_proportions),
+        cmocka_unit_test(triangle_normal_at_extreme_scales),
         cmocka_unit_test(sphere_vertices_carry_exact_normals_and_triangles_face_out),
         cmocka_unit_test(sphere_area_approaches_four_pi),
         cmocka_unit_test(seams_and_poles_are_welded_bitwise),

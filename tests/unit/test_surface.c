@@ -186,6 +186,39 @@ static void sphere_poles_give_the_limit_normal(void **state)
     sc_surface_free(s);
 }
 
+static closed_form unit_sphere(double u, double v) { return sphere_at(1.0, u, v); }
+static closed_form unit_cylinder(double u, double v) { return cylinder_at(1.0, 1.0, u, v); }
+
+/* The normal does not depend on the size: sphere r = 1e308 (∂S/∂u beyond the double range),
+ * r = 1e-308 (a cross product below it), and a user surface scaled by 1e200 or 1e-200 have the
+ * closed-form normal of their unit-size twins. */
+static void extreme_sizes_keep_the_closed_form_normal(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *spec;
+        closed_form (*unit)(double u, double v);
+    } cases[] = {
+        {"sphere r=1e308", unit_sphere},
+        {"sphere r=1e-308", unit_sphere},
+        {"sphere r=4e-320", unit_sphere},
+        {"user x=1e200*cos(6.283185307179586*u) y=1e200*sin(6.283185307179586*u) z=1e200*v",
+         unit_cylinder},
+        {"user x=1e-200*cos(6.283185307179586*u) y=1e-200*sin(6.283185307179586*u) z=1e-200*v",
+         unit_cylinder},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        sc_surface *s = parse(cases[i].spec);
+        sc_surface_point q;
+        FOR_GRID(u, v) {
+            sc_surface_eval(s, u, v, &q);
+            assert_int_equal(q.degenerate, 0);
+            assert_vec_near(q.n, cases[i].unit(u, v).n, NORMAL_TOL, cases[i].spec);
+        }
+        sc_surface_free(s);
+    }
+}
+
 /* A surface that is a point everywhere: every step of the fallback is degenerate too. */
 static void surface_without_area_falls_back_to_z(void **state)
 {
@@ -458,6 +491,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sphere_matches_its_closed_form),
+        cmocka_unit_test(extreme_sizes_keep_the_closed_form_normal),
         cmocka_unit_test(torus_matches_its_closed_form),
         cmocka_unit_test(cylinder_matches_its_closed_form),
         cmocka_unit_test(plane_is_the_square_facing_z),
