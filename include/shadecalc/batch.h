@@ -18,7 +18,8 @@
  * Tiers name their worst-case error like SLEEF's _u10/_u35: `u1` (<= 1 ULP against the double
  * reference: the accurate tier, the algorithm of the scalar highp built-ins), `u4`, `bits12`
  * (relative error <= 2^-12), `bits8` (<= 2^-8). Inputs and outputs are separate float arrays, any
- * n, any alignment; outputs may not alias inputs. A kernel computes only the terms it names.
+ * n, aligned as floats (4 bytes; nothing stricter is needed); outputs may not alias inputs. A
+ * kernel computes only the terms it names.
  * One-input kernels write outputs of 2^21 elements or more with non-temporal stores (past the
  * caches: the output line is not read before it is written).
  */
@@ -35,7 +36,7 @@ const char *sc_isa_name(sc_isa isa);
 int sc_isa_parse(const char *name, sc_isa *out);
 int sc_isa_supported(sc_isa isa);
 /* The instruction set sc_batch_run uses: chosen once, from SHADECALC_ISA when set to a
- * supported one, else the best supported. */
+ * supported one, else the best supported. Both functions may be called from any thread. */
 sc_isa sc_isa_active(void);
 /* Overrides the choice (--isa); -1 if isa is not supported here. */
 int sc_isa_set(sc_isa isa);
