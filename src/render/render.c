@@ -16,7 +16,7 @@ typedef struct {
     const sc_mesh *mesh;
     sc_framebuffer *fb;
     render_view view;
-    render_shader shader; /* the scene, precision, and the batch kernel's uniforms if it fits */
+    render_shader shader; /* the scene, precision, and the batch kernel's plan if it fits */
     raster_tri *tris; /* set-up screen triangles, in mesh order */
     int n_tris;
     unsigned char *front; /* per mesh triangle: 1 if its counter-clockwise side faces the eye */
@@ -403,6 +403,7 @@ static void clear(sc_framebuffer *fb)
 
 static void free_job(render_job *job)
 {
+    render_shader_free(&job->shader);
     free(job->tris);
     free(job->front);
     free(job->face_n);
@@ -416,7 +417,8 @@ int sc_render(const sc_render_params *p, sc_framebuffer *fb, char *err, size_t e
         return -1;
     render_job job = {.p = p, .mesh = p->mesh, .fb = fb};
     render_view_make(&p->camera, fb->width, fb->height, &job.view);
-    render_shader_init(&job.shader, p->scene, p->prec);
+    char why[256];
+    render_shader_init(&job.shader, p->scene, p->prec, p->tier, why, sizeof why);
     job.tiles_x = (fb->width + TILE - 1) / TILE;
     job.tiles_y = (fb->height + TILE - 1) / TILE;
     size_t n_faces = (size_t)p->mesh->n_triangles;
