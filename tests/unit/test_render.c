@@ -232,6 +232,43 @@ static void threads_give_the_same_image(void **state)
     sc_surface_free(s);
 }
 
+/* Every pixel is cleared, including those no triangle covers, on a framebuffer a previous
+ * render left full: a size that is not a multiple of the tiles, a render over garbage gives the
+ * image of a fresh framebuffer. */
+static void render_clears_every_pixel(void **state)
+{
+    (void)state;
+    enum { W = 131, H = 70 };
+    sc_surface *s = sphere();
+    sc_mesh m;
+    scene_box b;
+    tessellate(s, 800, &m);
+    make_scene(&b, "point pos=2,-3,3 I=20", "lambert");
+    sc_framebuffer fresh, reused;
+    assert_int_equal(sc_framebuffer_init(&fresh, W, H), 0);
+    assert_int_equal(sc_framebuffer_init(&reused, W, H), 0);
+    for (int i = 0; i < W * H; i++) {
+        for (int c = 0; c < 4; c++)
+            reused.rgba[4 * i + c] = 7.0f;
+        for (int c = 0; c < 3; c++)
+            reused.normal[3 * i + c] = -3.0f;
+        reused.depth[i] = 1.0f;
+    }
+    render_ok(&m, s, &b.scene, SC_SHADING_PHONG, &side_view, 3, &fresh);
+    render_ok(&m, s, &b.scene, SC_SHADING_PHONG, &side_view, 2, &reused);
+    assert_memory_equal(fresh.rgba, reused.rgba, 4 * W * H * sizeof(float));
+    assert_memory_equal(fresh.normal, reused.normal, 3 * W * H * sizeof(float));
+    assert_memory_equal(fresh.depth, reused.depth, W * H * sizeof(float));
+    int empty = 0;
+    for (int i = 0; i < W * H; i++)
+        empty += reused.rgba[4 * i + 3] == 0.0f && isinf(reused.depth[i]);
+    assert_true(empty > 0); /* the corners: the sphere does not fill the picture */
+    sc_framebuffer_free(&fresh);
+    sc_framebuffer_free(&reused);
+    sc_mesh_free(&m);
+    sc_surface_free(s);
+}
+
 /* highp shading of scenes the batch kernel computes goes through it (render/shade_span.c):
  * the image matches the double sc_shade image within the kernel's accurate-tier bound
  * (relative 2^-16 plus the float rounding of the inputs), for each of its BRDFs, with a
@@ -588,6 +625,7 @@ int main(void)
         cmocka_unit_test(z_buffer_keeps_nearest),
         cmocka_unit_test(threads_give_the_same_image),
         cmocka_unit_test(batch_kernel_matches_sc_shade),
+        cmocka_unit_test(render_clears_every_pixel),
         cmocka_unit_test(other_scenes_keep_sc_shade),
         cmocka_unit_test(render_tiers_within_their_bounds),
         cmocka_unit_test(exact_sphere_normals_match_ray_intersection),
