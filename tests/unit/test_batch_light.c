@@ -298,6 +298,40 @@ static void spot_by_hand(void **state)
     }
 }
 
+/* ---- the shading kernel's lobe exponents ---- */
+
+/* The shading kernel raises n·h to an integer m by binary powering (up to 64 in the accurate
+ * tier, 256 in the fast ones) and to other m by its pow: tests/unit/test_batch.c checks m = 32
+ * on 10^6 inputs; here the other paths, on 10^6 inputs each, every tier and instruction set:
+ * m = 40.5 (pow everywhere), 128 (pow in the accurate tier, powering in the fast ones; the
+ * largest m of the stated domain), 64 (the largest of the accurate tier's powering). */
+static void shade_lobe_exponents_within_bounds(void **state)
+{
+    (void)state;
+    enum { N_SHADE = 1000000 };
+    static const float exponents[] = {40.5f, 128.0f, 64.0f};
+    const sc_batch_entry *e = scalar_row("shade");
+    run_buffers b;
+    buffers_alloc(&b, e, N_SHADE, NULL);
+    for (size_t i = 0; i < N_SHADE; i++) {
+        float v[9];
+        sc_batch_sample(e, &rng, v);
+        for (int j = 0; j < 9; j++)
+            b.in[j][i] = v[j];
+    }
+    for (size_t k = 0; k < sizeof exponents / sizeof exponents[0]; k++) {
+        sc_batch_scene scene;
+        char what[32];
+        sc_batch_scene_example(SC_BATCH_BLINN_PHONG, 1, 1, 3, &scene);
+        scene.m = exponents[k];
+        b.args.scene = &scene;
+        fill_references(e, &b);
+        snprintf(what, sizeof what, "m = %g", (double)exponents[k]);
+        check_all_rows("shade", &b, what);
+    }
+    buffers_release(&b);
+}
+
 /* ---- scene plans ---- */
 
 enum { N_PLAN = 1001, PLAN_THREADS = 4 };
@@ -382,6 +416,7 @@ static void plans_match_sc_shade(void **state)
 {
     (void)state;
     static const char *const models[] = {"lambert", "blinn-phong m=40 spec=0.4",
+                                         "blinn-phong m=40.5 spec=0.4",
                                          "cook-torrance alpha=0.3 f0=0.04"};
     static const char *const tiers[] = {"accurate", "bits12", "bits8"};
     plan_arrays a;
@@ -390,7 +425,7 @@ static void plans_match_sc_shade(void **state)
     for (int j = 0; j < 3; j++)
         assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
     plan_points(&a, N_PLAN);
-    for (int m = 0; m < 3; m++) {
+    for (int m = 0; m < 4; m++) {
         sc_light lights[4];
         sc_scene scene;
         make_plan_scene(models[m], lights, &scene);
@@ -501,6 +536,7 @@ int main(void)
         cmocka_unit_test(attenuation_edges),
         cmocka_unit_test(spot_by_hand),
         cmocka_unit_test(spot_edges),
+        cmocka_unit_test(shade_lobe_exponents_within_bounds),
         cmocka_unit_test(plans_match_sc_shade),
         cmocka_unit_test(one_plan_many_threads),
     };
