@@ -25,18 +25,24 @@ static void *ask_active(void *out)
     return NULL;
 }
 
+/* Starts thread 0 on `first` and the others on ask_active (seen[i]), all released at once. */
+static void race(void *(*first)(void *), sc_isa seen[THREADS])
+{
+    pthread_t threads[THREADS];
+    assert_int_equal(pthread_barrier_init(&start, NULL, THREADS), 0);
+    for (int i = 0; i < THREADS; i++)
+        assert_int_equal(pthread_create(&threads[i], NULL, i ? ask_active : first, &seen[i]), 0);
+    for (int i = 0; i < THREADS; i++)
+        assert_int_equal(pthread_join(threads[i], NULL), 0);
+    pthread_barrier_destroy(&start);
+}
+
 /* Runs first in this binary: the threads race to make the first choice. */
 static void every_thread_sees_one_choice(void **state)
 {
     (void)state;
-    pthread_t threads[THREADS];
     sc_isa seen[THREADS];
-    assert_int_equal(pthread_barrier_init(&start, NULL, THREADS), 0);
-    for (int i = 0; i < THREADS; i++)
-        assert_int_equal(pthread_create(&threads[i], NULL, ask_active, &seen[i]), 0);
-    for (int i = 0; i < THREADS; i++)
-        assert_int_equal(pthread_join(threads[i], NULL), 0);
-    pthread_barrier_destroy(&start);
+    race(ask_active, seen);
     for (int i = 0; i < THREADS; i++)
         assert_int_equal(seen[i], sc_isa_active());
     assert_true(sc_isa_supported(sc_isa_active()));
@@ -54,16 +60,9 @@ static void *set_scalar(void *arg)
 static void set_while_others_read(void **state)
 {
     (void)state;
-    pthread_t threads[THREADS];
     sc_isa seen[THREADS];
     sc_isa before = sc_isa_active();
-    assert_int_equal(pthread_barrier_init(&start, NULL, THREADS), 0);
-    assert_int_equal(pthread_create(&threads[0], NULL, set_scalar, NULL), 0);
-    for (int i = 1; i < THREADS; i++)
-        assert_int_equal(pthread_create(&threads[i], NULL, ask_active, &seen[i]), 0);
-    for (int i = 0; i < THREADS; i++)
-        assert_int_equal(pthread_join(threads[i], NULL), 0);
-    pthread_barrier_destroy(&start);
+    race(set_scalar, seen);
     for (int i = 1; i < THREADS; i++)
         assert_true(seen[i] == before || seen[i] == SC_ISA_SCALAR);
     assert_int_equal(sc_isa_active(), SC_ISA_SCALAR);

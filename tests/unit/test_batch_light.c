@@ -111,17 +111,23 @@ static sc_batch_brdf_params brdf_params(sc_brdf_kind model, int form, int cos_fl
     return p;
 }
 
+/* n random inputs of e's domain in b */
+static void sampled_buffers(run_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
+{
+    buffers_alloc(b, e, n, params);
+    for (size_t i = 0; i < n; i++) {
+        float v[9];
+        sc_batch_sample(e, &rng, v);
+        for (int j = 0; j < e->n_in; j++)
+            b->in[j][i] = v[j];
+    }
+}
+
 static void check_brdf(const sc_batch_brdf_params *p, const char *what)
 {
     const sc_batch_entry *e = scalar_row("brdf");
     run_buffers b;
-    buffers_alloc(&b, e, N_BRDF, p);
-    for (size_t i = 0; i < N_BRDF; i++) {
-        float v[9];
-        sc_batch_sample(e, &rng, v);
-        for (int j = 0; j < 9; j++)
-            b.in[j][i] = v[j];
-    }
+    sampled_buffers(&b, e, N_BRDF, p);
     fill_references(e, &b);
     check_all_rows("brdf", &b, what);
     buffers_release(&b);
@@ -312,13 +318,7 @@ static void shade_lobe_exponents_within_bounds(void **state)
     static const float exponents[] = {40.5f, 128.0f, 64.0f};
     const sc_batch_entry *e = scalar_row("shade");
     run_buffers b;
-    buffers_alloc(&b, e, N_SHADE, NULL);
-    for (size_t i = 0; i < N_SHADE; i++) {
-        float v[9];
-        sc_batch_sample(e, &rng, v);
-        for (int j = 0; j < 9; j++)
-            b.in[j][i] = v[j];
-    }
+    sampled_buffers(&b, e, N_SHADE, NULL);
     for (size_t k = 0; k < sizeof exponents / sizeof exponents[0]; k++) {
         sc_batch_scene scene;
         char what[32];
