@@ -35,6 +35,9 @@ CPPFLAGS += -Iinclude -Isrc -I. -I$(BUILD)/gen -D_POSIX_C_SOURCE=200809L -DSC_VE
 ifeq ($(SAN),1)
 SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
+ifeq ($(SAN),thread)
+SANFLAGS := -fsanitize=thread -fno-omit-frame-pointer
+endif
 ALLCFLAGS = $(WARN) $(OPT) $(FPFLAGS) -fPIC -pthread $(SANFLAGS) $(CFLAGS)
 EXR_LIBS  = $(shell pkg-config --libs-only-l OpenEXR 2>/dev/null | tr ' ' '\n' | grep OpenEXRCore)
 LDLIBS   += $(EXR_LIBS) -lm -lpthread

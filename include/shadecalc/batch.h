@@ -14,11 +14,14 @@
  *   sc_batch_error_of                   max/mean ULP, max relative/absolute error, bound ratio
  *   sc_batch_scene_example              the standard scenes of the tests and the bench
  *   sc_batch_run                        run a kernel by name and tier on the active ISA
+ *   sc_batch_plan_compile, _shade, _free a scene of shade.h compiled once for the shading
+ *                                       kernel: its uniforms and its function, or why not
  *
  * Tiers name their worst-case error like SLEEF's _u10/_u35: `u1` (<= 1 ULP against the double
  * reference: the accurate tier, the algorithm of the scalar highp built-ins), `u4`, `bits12`
  * (relative error <= 2^-12), `bits8` (<= 2^-8). Inputs and outputs are separate float arrays, any
- * n, any alignment; outputs may not alias inputs. A kernel computes only the terms it names.
+ * n, aligned as floats (4 bytes; nothing stricter is needed); outputs may not alias inputs. A
+ * kernel computes only the terms it names.
  * One-input kernels write outputs of 2^21 elements or more with non-temporal stores (past the
  * caches: the output line is not read before it is written).
  */
@@ -28,6 +31,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "shadecalc/shade.h"
+
 typedef enum { SC_ISA_SCALAR, SC_ISA_SSE41, SC_ISA_AVX2, SC_ISA_COUNT } sc_isa;
 
 const char *sc_isa_name(sc_isa isa);
@@ -35,12 +40,13 @@ const char *sc_isa_name(sc_isa isa);
 int sc_isa_parse(const char *name, sc_isa *out);
 int sc_isa_supported(sc_isa isa);
 /* The instruction set sc_batch_run uses: chosen once, from SHADECALC_ISA when set to a
- * supported one, else the best supported. */
+ * supported one, else the best supported. Both functions may be called from any thread. */
 sc_isa sc_isa_active(void);
 /* Overrides the choice (--isa); -1 if isa is not supported here. */
 int sc_isa_set(sc_isa isa);
 
-/* ---- shading uniforms ---- */
+/* ---- shading uniforms (what a plan compiles a scene into; the tests and the bench also build
+ * them directly) ---- */
 
 enum { SC_BATCH_MAX_LIGHTS = 64 }; /* more: split the set, amb_term 0 in all parts but one */
 
@@ -206,5 +212,29 @@ const sc_batch_entry *sc_batch_find(const char *kernel, const char *tier, sc_isa
 /* Runs kernel × tier on the active instruction set (falling back to the best one that has
  * it, then scalar). Returns 0, or -1 if no such kernel or tier. */
 int sc_batch_run(const char *kernel, const char *tier, const sc_batch_args *a);
+
+/* ---- scene plans ---- */
+
+/* A scene compiled for the shading kernel: the float uniforms of sc_batch_scene computed once
+ * from the double description (shade.h), and the kernel of a tier on an instruction set
+ * resolved once. Immutable: any number of threads may shade through one plan. */
+typedef struct sc_batch_plan sc_batch_plan;
+
+/* Compiles scene for tier (accurate, bits12, bits8) on isa (else the best supported set below
+ * it that has the tier). NULL with the reason in why when the kernel does not compute the
+ * scene: a legacy model, a BRDF or variant it lacks (it has lambert, normalized blinn-phong
+ * with m >= 1, and cook-torrance walter GGX/smith-correlated/schlick with isotropic α >= 10^-4
+ * and grey F0), a falloff other than inverse-square (point, spot) or none (directional), a
+ * range, more than SC_BATCH_MAX_LIGHTS lights, an unknown tier; or out of memory. */
+sc_batch_plan *sc_batch_plan_compile(const sc_scene *scene, const char *tier, sc_isa isa,
+                                     char *why, size_t size);
+void sc_batch_plan_free(sc_batch_plan *plan);
+
+/* The table entry (kernel, tier, instruction set, bound) the plan runs. */
+const sc_batch_entry *sc_batch_plan_entry(const sc_batch_plan *plan);
+
+/* The shade kernel's inputs (n, v, p as nine arrays) and outputs (r, g, b) for n points. */
+void sc_batch_plan_shade(const sc_batch_plan *plan, const float *const in[9], float *const out[3],
+                         size_t n);
 
 #endif

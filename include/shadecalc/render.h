@@ -84,6 +84,8 @@ typedef struct {
     const sc_surface *surface; /* exact: the surface the mesh's uv refer to */
     const sc_scene *scene;
     sc_prec prec;              /* the precision sc_shade computes in */
+    const char *tier;          /* highp: the batch shading kernel's tier (batch.h: accurate,
+                                  bits12, bits8); NULL: accurate */
     sc_shading shading;
     sc_camera camera;
     int threads;               /* 0: one per online core */
@@ -91,8 +93,9 @@ typedef struct {
     void *progress_ctx;
 } sc_render_params;
 
-/* Draws into fb (initialized, cleared here). 0, or -1 with err (invalid camera, a mesh without
- * the normals or uv the shading needs, exact without a surface, out of memory). */
+/* Draws into fb (initialized; cleared here, tile by tile: after a failure its pixels are
+ * unspecified). 0, or -1 with err (invalid camera, a mesh without the normals or uv the shading
+ * needs, exact without a surface, out of memory). */
 int sc_render(const sc_render_params *p, sc_framebuffer *fb, char *err, size_t errsize);
 
 typedef struct {

@@ -1,5 +1,7 @@
 /* Instruction-set selection (shadecalc/batch.h): chosen once from what the CPU supports, or
- * from SHADECALC_ISA; the scalar kernels always work. */
+ * from SHADECALC_ISA; the scalar kernels always work. Safe to call from any thread. */
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -32,7 +34,10 @@ int sc_isa_supported(sc_isa isa)
     }
 }
 
-static int active = -1;
+/* The instruction set in use: -1 until chosen. Render's worker threads ask for it while the
+ * main thread may set it, so it is atomic, and the default is chosen once (pthread_once). */
+static atomic_int active = -1;
+static pthread_once_t default_once = PTHREAD_ONCE_INIT;
 
 static sc_isa best_supported(void)
 {
@@ -42,23 +47,28 @@ static sc_isa best_supported(void)
     return SC_ISA_SCALAR;
 }
 
+/* SHADECALC_ISA when it names a supported set, else the best; an earlier sc_isa_set stands. */
+static void choose_default(void)
+{
+    const char *env = getenv("SHADECALC_ISA");
+    sc_isa chosen;
+    if (!(env && sc_isa_parse(env, &chosen) == 0 && sc_isa_supported(chosen)))
+        chosen = best_supported();
+    int unset = -1;
+    atomic_compare_exchange_strong(&active, &unset, (int)chosen);
+}
+
 sc_isa sc_isa_active(void)
 {
-    if (active < 0) {
-        const char *env = getenv("SHADECALC_ISA");
-        sc_isa chosen;
-        active = env && sc_isa_parse(env, &chosen) == 0 && sc_isa_supported(chosen)
-                     ? (int)chosen
-                     : (int)best_supported();
-    }
-    return (sc_isa)active;
+    pthread_once(&default_once, choose_default);
+    return (sc_isa)atomic_load(&active);
 }
 
 int sc_isa_set(sc_isa isa)
 {
     if (!sc_isa_supported(isa))
         return -1;
-    active = (int)isa;
+    atomic_store(&active, (int)isa);
     return 0;
 }
 

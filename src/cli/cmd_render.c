@@ -29,8 +29,10 @@ typedef struct {
     const char *surface, *mesh_path, *output, *output_dir;
     int triangles, width, height, threads, depth, normals, compare, format;
     sc_shading shading;
-    sc_pixel_type exr_type;
+    sc_exr_options exr; /* type and compression; threads from --threads */
     sc_prec prec;
+    const char *tier; /* the shading kernel's tier */
+    int have_tier;
     double eye[3], at[3], up[3], fov;
     int have_eye, have_at;
     const char *plan_option; /* --shading or --triangles, which --compare's plan fixes */
@@ -63,12 +65,15 @@ static void usage(FILE *out)
             "      --size WxH       image size (default 512x512)\n"
             "  -o, --output FILE    the EXR to write (RGBA)\n"
             "      --exr-type T     half|float (default half)\n"
+            "      --compression C  none|rle|zips|zip|piz|pxr24 (default zip)\n"
             "      --depth          add a Z channel (view depth)\n"
             "      --normals        add N.X N.Y N.Z (the shading normal)\n"
             "  -j, --threads N      threads (default: one per online core)\n"
             "  -p, --precision P    double|highp|mediump|lowp (default highp)\n"
             "      --isa I          scalar|sse4.1|avx2: the shading kernel's instruction set\n"
             "                       (default: SHADECALC_ISA, else the best this CPU has)\n"
+            "      --tier T         accurate|bits12|bits8: the shading kernel's tier\n"
+            "                       (default accurate)\n"
             "      --compare        the Gouraud/Phong comparison (writes into --output-dir)\n"
             "      --output-dir DIR where --compare writes its images (default .)\n"
             "  -f, --format F       table|csv for --compare (default table)\n"
@@ -180,9 +185,51 @@ static int parse_isa(const char *arg)
     return SC_EXIT_OK;
 }
 
+/* --tier: a tier of the batch shading kernel */
+static int parse_tier(const char *arg, const char **out)
+{
+    if (!sc_batch_find("shade", arg, SC_ISA_SCALAR)) {
+        sc_error("render: --tier %s: expected accurate, bits12 or bits8", arg);
+        return SC_EXIT_USAGE;
+    }
+    *out = arg;
+    return SC_EXIT_OK;
+}
+
+/* A --tier given must be one the batch kernel computes this scene with, in highp. */
+static int check_tier(const render_options *o, const sc_scene *scene)
+{
+    char why[256];
+    if (!o->have_tier)
+        return SC_EXIT_OK;
+    if (o->prec != SC_HIGHP) {
+        sc_error("render: --tier %s: the shading kernel computes highp, not -p %s", o->tier,
+                 sc_prec_name(o->prec));
+        return SC_EXIT_USAGE;
+    }
+    sc_batch_plan *plan = sc_batch_plan_compile(scene, o->tier, sc_isa_active(), why, sizeof why);
+    if (!plan) {
+        sc_error("render: --tier %s: the shading kernel does not compute this scene: %s", o->tier,
+                 why);
+        return SC_EXIT_USAGE;
+    }
+    sc_batch_plan_free(plan);
+    return SC_EXIT_OK;
+}
+
+static int parse_compression(const char *arg, sc_exr_compression *out)
+{
+    if (sc_exr_compression_parse(arg, out) != 0) {
+        sc_error("render: --compression %s: expected none|rle|zips|zip|piz|pxr24", arg);
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}
+
 enum {
     OPT_SURFACE = 256, OPT_MESH, OPT_SHADING, OPT_EYE, OPT_AT, OPT_UP, OPT_FOV, OPT_SIZE,
-    OPT_EXR_TYPE, OPT_DEPTH, OPT_NORMALS, OPT_COMPARE, OPT_OUTPUT_DIR, OPT_ISA
+    OPT_EXR_TYPE, OPT_DEPTH, OPT_NORMALS, OPT_COMPARE, OPT_OUTPUT_DIR, OPT_ISA, OPT_TIER,
+    OPT_COMPRESSION
 };
 
 typedef struct {
@@ -202,6 +249,8 @@ static int apply_value(render_options *o, int c, const char *arg)
         return parse_count("--triangles", arg, 2, 1L << 26, &o->triangles);
     case 'j': return parse_count("--threads", arg, 1, 1024, &o->threads);
     case OPT_ISA: return parse_isa(arg);
+    case OPT_TIER: o->have_tier = 1; return parse_tier(arg, &o->tier);
+    case OPT_COMPRESSION: return parse_compression(arg, &o->exr.compression);
     case OPT_SIZE: return parse_size(arg, o);
     case OPT_EYE: return parse_vector("--eye", arg, o->eye, &o->have_eye);
     case OPT_AT: return parse_vector("--at", arg, o->at, &o->have_at);
@@ -226,7 +275,7 @@ static int apply_value(render_options *o, int c, const char *arg)
         break;
     case OPT_EXR_TYPE:
         status = parse_choice("--exr-type", arg, types, 2, &choice);
-        o->exr_type = choice ? SC_PIXEL_FLOAT : SC_PIXEL_HALF;
+        o->exr.type = choice ? SC_PIXEL_FLOAT : SC_PIXEL_HALF;
         break;
     case 'f':
         status = parse_choice("--format", arg, formats, 2, &o->format);
@@ -270,6 +319,8 @@ static const struct option long_options[] = {
     {"normals", no_argument, NULL, OPT_NORMALS},
     {"threads", required_argument, NULL, 'j'},
     {"isa", required_argument, NULL, OPT_ISA},
+    {"tier", required_argument, NULL, OPT_TIER},
+    {"compression", required_argument, NULL, OPT_COMPRESSION},
     {"precision", required_argument, NULL, 'p'},
     {"compare", no_argument, NULL, OPT_COMPARE},
     {"output-dir", required_argument, NULL, OPT_OUTPUT_DIR},
@@ -424,7 +475,9 @@ static int write_exr(const render_options *o, const sc_image *img, const char *p
     char err[1024];
     const sc_image_attr attrs[] = {{"shadecalc:command", o->command},
                                    {(char *)key, (char *)value}};
-    if (sc_exr_write(path, img, o->exr_type, attrs, 2, err, sizeof err) < 0) {
+    sc_exr_options exr = o->exr;
+    exr.threads = o->threads;
+    if (sc_exr_write_with(path, img, &exr, attrs, 2, err, sizeof err) < 0) {
         sc_error("%s", err);
         return SC_EXIT_RUNTIME;
     }
@@ -467,7 +520,7 @@ static int draw(sc_render_params *rp, const char *label, sc_framebuffer *fb, dou
 /* A warning if colours overflow: inf in the precision, or beyond half's 65504 in a half EXR. */
 static void warn_overflow(const sc_framebuffer *fb, const render_options *o)
 {
-    double largest = o->exr_type == SC_PIXEL_HALF ? 65504.0 : HUGE_VAL;
+    double largest = o->exr.type == SC_PIXEL_HALF ? 65504.0 : HUGE_VAL;
     long count = 0;
     for (size_t i = 0; i < (size_t)fb->width * (size_t)fb->height; i++)
         for (int c = 0; c < 3; c++)
@@ -477,7 +530,7 @@ static void warn_overflow(const sc_framebuffer *fb, const render_options *o)
             }
     if (count)
         sc_warning("render: %ld pixels overflow to inf (beyond %s)", count,
-                   o->exr_type == SC_PIXEL_HALF ? "half's 65504" : "the float range");
+                   o->exr.type == SC_PIXEL_HALF ? "half's 65504" : "the float range");
 }
 
 static int render_one(const render_options *o, const shade_setup *s, const sc_scene *scene)
@@ -494,7 +547,7 @@ static int render_one(const render_options *o, const shade_setup *s, const sc_sc
     }
     double seconds;
     sc_render_params rp = {.mesh = &mesh, .surface = surface, .scene = scene, .prec = o->prec,
-                           .shading = o->shading, .threads = o->threads};
+                           .tier = o->tier, .shading = o->shading, .threads = o->threads};
     if (status == SC_EXIT_OK) {
         char err[512];
         make_camera(o, s, &mesh, &rp.camera);
@@ -669,7 +722,7 @@ static int render_compare(const render_options *o, const shade_setup *s, const s
     compare_row rows[STEPS];
     int status = prepare_compare(o, &c);
     sc_render_params rp = {.surface = c.surface, .scene = scene, .prec = o->prec,
-                           .threads = o->threads};
+                           .tier = o->tier, .threads = o->threads};
     if (status == SC_EXIT_OK) {
         char err[512];
         make_camera(o, s, &c.meshes[MESHES - 1], &rp.camera);
@@ -700,7 +753,8 @@ static int run(int argc, char **argv)
 {
     shade_setup *s = malloc(sizeof *s);
     render_options o = {.triangles = 6320, .width = 512, .height = 512, .shading = SC_SHADING_PHONG,
-                        .exr_type = SC_PIXEL_HALF, .prec = SC_HIGHP, .up = {0, 0, 1},
+                        .exr = {SC_PIXEL_HALF, SC_EXR_ZIP, 0}, .prec = SC_HIGHP,
+                        .tier = "accurate", .up = {0, 0, 1},
                         .fov = 40.0, .output_dir = ".", .command = join_command(argc, argv)};
     if (!s || !o.command) {
         free(s);
@@ -717,7 +771,9 @@ static int run(int argc, char **argv)
     if (status == SC_EXIT_OK) {
         sc_scene scene = {s->lights, s->n_lights, s->model,
                           {s->ambient[0], s->ambient[1], s->ambient[2]}};
-        status = o.compare ? render_compare(&o, s, &scene) : render_one(&o, s, &scene);
+        status = check_tier(&o, &scene);
+        if (status == SC_EXIT_OK)
+            status = o.compare ? render_compare(&o, s, &scene) : render_one(&o, s, &scene);
     }
     free(s);
     free(o.command);

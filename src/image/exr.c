@@ -1,27 +1,32 @@
 /* OpenEXR files through OpenEXR's Core C API (OpenEXR 3.1, openexr.h): the writer encodes a
- * scanline ZIP file into memory and hands the bytes to an atomic file (shadecalc/file.h); the
+ * scanline file (none, RLE, ZIPS, ZIP, PIZ or PXR24 compression) into memory, its chunks
+ * compressed on several threads, and hands the bytes to an atomic file (shadecalc/file.h); the
  * reader decodes a file held in memory, chunk by chunk, into the float image.
  *
  * Pipeline (OpenEXR "Reading and Writing Image Files", Core API): a context with custom
  * read/write callbacks; per chunk, exr_{read,write}_*_chunk_info, then an encode or decode
  * pipeline whose channel pointers address planar staging buffers, run with the library's default
- * (un)pack routines (which convert half and uint to float when reading). Half values are rounded
- * by sc_half_from_double, so a file holds exactly the mediump values the rest of shadecalc
- * computes. Two defects of OpenEXR 3.1 are worked around below (planar buffers, tie-sized ZIP
- * chunks). */
+ * (un)pack routines (which convert half and uint to float when reading). Half values have the
+ * bits of sc_half_from_double (image/half.h), so a file holds exactly the mediump values the
+ * rest of shadecalc computes. Two defects of OpenEXR 3.1 are worked around below (planar
+ * buffers, tie-sized ZIP chunks), and its lock over a whole encoding run (one context per
+ * worker). */
 #include "shadecalc/image.h"
 
 #include <errno.h>
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <OpenEXR/openexr.h>
 
+#include "image/half.h"
 #include "shadecalc/file.h"
-#include "shadecalc/precision.h"
 
 /* The image's own channel order (EXR sorts channels by name), as a string vector. */
 static const char channel_order_attr[] = "shadecalc:channel_order";
@@ -172,16 +177,45 @@ static int needs_long_names(const sc_image *img, const sc_image_attr *attrs, int
     return 0;
 }
 
-/* One scanline part: required attributes, ZIP, the channels, the channel order, the caller's
- * string attributes; then the header is written. */
-static exr_result_t define_header(exr_context_t ctx, const sc_image *img, exr_pixel_type_t type,
-                                  const sc_image_attr *attrs, int n_attrs)
+/* ---- compression names ---------------------------------------------------------------------- */
+
+/* What sc_exr_compression means to OpenEXR. */
+static const struct {
+    const char *name;
+    exr_compression_t exr;
+} compressions[SC_EXR_COMPRESSION_COUNT] = {
+    {"none", EXR_COMPRESSION_NONE}, {"rle", EXR_COMPRESSION_RLE},
+    {"zips", EXR_COMPRESSION_ZIPS}, {"zip", EXR_COMPRESSION_ZIP},
+    {"piz", EXR_COMPRESSION_PIZ},   {"pxr24", EXR_COMPRESSION_PXR24},
+};
+
+const char *sc_exr_compression_name(sc_exr_compression c)
+{
+    return (unsigned)c < SC_EXR_COMPRESSION_COUNT ? compressions[c].name : NULL;
+}
+
+int sc_exr_compression_parse(const char *name, sc_exr_compression *out)
+{
+    for (int i = 0; i < SC_EXR_COMPRESSION_COUNT; i++)
+        if (strcmp(name, compressions[i].name) == 0) {
+            *out = (sc_exr_compression)i;
+            return 0;
+        }
+    return -1;
+}
+
+/* One scanline part: required attributes, the compression, the channels, the channel order,
+ * the caller's string attributes; then the header is written. */
+static exr_result_t define_header(exr_context_t ctx, const sc_image *img,
+                                  const sc_exr_options *opt, const sc_image_attr *attrs,
+                                  int n_attrs)
 {
     int part = 0;
+    exr_pixel_type_t type = opt->type == SC_PIXEL_HALF ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT;
     exr_result_t r = exr_add_part(ctx, NULL, EXR_STORAGE_SCANLINE, &part);
     if (!r)
         r = exr_initialize_required_attr_simple(ctx, part, img->width, img->height,
-                                                EXR_COMPRESSION_ZIP);
+                                                compressions[opt->compression].exr);
     if (!r && needs_long_names(img, attrs, n_attrs))
         r = exr_set_longname_support(ctx, 1);
     for (int c = 0; !r && c < img->n_channels; c++)
@@ -225,27 +259,75 @@ static void point_at_planes(exr_coding_channel_info_t *channels, int count, cons
         exr_coding_channel_info_t *ch = &channels[i];
         int c = sc_image_channel_index(img, ch->channel_name);
         ch->user_bytes_per_element = (int16_t)elem_size;
-        ch->user_pixel_stride = elem_size;
         ch->user_line_stride = elem_size * width;
+        ch->user_pixel_stride = elem_size;
         ch->decode_to_ptr = planes + (size_t)c * plane_bytes; /* also encode_from_ptr */
     }
 }
 
-/* Rows [y, y + rows) of img into planes, as binary16 (sc_half_from_double) or binary32. */
+/* Rows [y, y + rows) of img into planes, as binary16 (image/half.h: sc_half_from_double's bits)
+ * or binary32; row: scratch for one row of one channel. */
 static void fill_planes(const sc_image *img, int y, int rows, sc_pixel_type type,
-                        unsigned char *planes)
+                        unsigned char *planes, float *row)
 {
-    size_t plane_values = (size_t)img->width * (size_t)rows;
-    uint16_t *half = (uint16_t *)planes;
-    float *single = (float *)planes;
-    for (int c = 0; c < img->n_channels; c++)
-        for (size_t i = 0; i < plane_values; i++) {
-            float v = sc_image_pixel(img, 0, y)[i * (size_t)img->n_channels + (size_t)c];
+    size_t width = (size_t)img->width, n_channels = (size_t)img->n_channels;
+    size_t plane_values = width * (size_t)rows;
+    for (size_t c = 0; c < n_channels; c++)
+        for (int r = 0; r < rows; r++) {
+            const float *pixels = sc_image_pixel(img, 0, y + r);
+            size_t at = c * plane_values + (size_t)r * width;
+            float *dest = type == SC_PIXEL_HALF ? row : (float *)planes + at;
+            for (size_t x = 0; x < width; x++)
+                dest[x] = pixels[x * n_channels + c];
             if (type == SC_PIXEL_HALF)
-                half[(size_t)c * plane_values + i] = sc_half_from_double(v);
-            else
-                single[(size_t)c * plane_values + i] = v;
+                image_halves_from_floats(row, (uint16_t *)planes + at, width, 0);
         }
+}
+
+/* ---- writing: chunks compressed on several threads, written in order ----------------------- *
+ * OpenEXR 3.1 holds a context's lock for the whole of exr_encoding_run, so chunks encoded on one
+ * context never overlap. Each worker therefore opens its own context with the same header
+ * (writing nowhere), compresses the chunks it takes into memory, and the file's context writes
+ * the compressed chunks in order (exr_write_scanline_chunk): the bytes of a chunk depend only
+ * on the header and the pixels, so the file is the same for any number of threads. */
+
+typedef struct {
+    unsigned char *bytes;
+    size_t size;
+} chunk_bytes;
+
+typedef struct {
+    const char *name;
+    const sc_image *img;
+    const sc_exr_options *opt;
+    const sc_image_attr *attrs;
+    int n_attrs, lines, n_chunks;
+    chunk_bytes *chunks;
+    atomic_int next_chunk, failed;
+} chunk_job;
+
+typedef struct {
+    chunk_job *job;
+    exr_stream stream; /* discards the bytes; keeps the worker's first error */
+    exr_context_t ctx;
+    exr_encode_pipeline_t enc;
+    int started;
+    plane_buffer planes;
+    float *row;
+    exr_result_t (*library_compress)(exr_encode_pipeline_t *enc);
+    chunk_bytes *target; /* where the chunk being encoded goes */
+} chunk_worker;
+
+/* A worker's context writes only its header, to nowhere. */
+static int64_t discard_write(exr_const_context_t ctxt, void *user, const void *buffer,
+                             uint64_t sz, uint64_t offset, exr_stream_error_func_ptr_t error_cb)
+{
+    (void)ctxt;
+    (void)user;
+    (void)buffer;
+    (void)offset;
+    (void)error_cb;
+    return (int64_t)sz;
 }
 
 /* The file format stores a chunk raw when compressing does not make it smaller, and readers
@@ -253,14 +335,10 @@ static void fill_planes(const sc_image *img, int y, int rows, sc_pixel_type type
  * issue #2306 (PR #2307) keeps zlib output of exactly the raw size, which every reader then
  * misreads (seen here: the last 16-byte chunk of a 2 × 49 RGBA half image). The library's
  * compressor is wrapped to store such a chunk raw. */
-typedef struct {
-    exr_result_t (*compress)(exr_encode_pipeline_t *enc);
-} library_compressor;
-
 static exr_result_t compress_or_store_raw(exr_encode_pipeline_t *enc)
 {
-    const library_compressor *library = enc->encoding_user_data;
-    exr_result_t r = library->compress(enc);
+    const chunk_worker *w = enc->encoding_user_data;
+    exr_result_t r = w->library_compress(enc);
     if (r == EXR_ERR_SUCCESS && enc->compressed_bytes >= enc->packed_bytes &&
         enc->compressed_buffer != enc->packed_buffer) {
         memcpy(enc->compressed_buffer, enc->packed_buffer, enc->packed_bytes);
@@ -269,66 +347,157 @@ static exr_result_t compress_or_store_raw(exr_encode_pipeline_t *enc)
     return r;
 }
 
-static exr_result_t encode_chunk(exr_context_t ctx, exr_encode_pipeline_t *enc, int *started,
-                                 const sc_image *img, int y, sc_pixel_type type,
-                                 plane_buffer *planes, library_compressor *library)
+/* Instead of writing the chunk: a copy of its bytes for the file's context. */
+static exr_result_t keep_chunk(exr_encode_pipeline_t *enc)
 {
-    exr_chunk_info_t chunk;
+    chunk_worker *w = enc->encoding_user_data;
+    const void *bytes = enc->compress_fn ? enc->compressed_buffer : enc->packed_buffer;
+    size_t size = enc->compress_fn ? enc->compressed_bytes : enc->packed_bytes;
+    w->target->bytes = malloc(size ? size : 1);
+    if (!w->target->bytes)
+        return EXR_ERR_OUT_OF_MEMORY;
+    memcpy(w->target->bytes, bytes, size);
+    w->target->size = size;
+    return EXR_ERR_SUCCESS;
+}
+
+static exr_result_t encode_chunk(chunk_worker *w, int index)
+{
+    const chunk_job *job = w->job;
+    const sc_image *img = job->img;
+    sc_pixel_type type = job->opt->type;
     int elem_size = type == SC_PIXEL_HALF ? (int)sizeof(uint16_t) : (int)sizeof(float);
-    exr_result_t r = exr_write_scanline_chunk_info(ctx, 0, y, &chunk);
+    exr_chunk_info_t chunk;
+    exr_result_t r = exr_write_scanline_chunk_info(w->ctx, 0, index * job->lines, &chunk);
     if (!r)
-        r = *started ? exr_encoding_update(ctx, 0, &chunk, enc)
-                     : exr_encoding_initialize(ctx, 0, &chunk, enc);
+        r = w->started ? exr_encoding_update(w->ctx, 0, &chunk, &w->enc)
+                       : exr_encoding_initialize(w->ctx, 0, &chunk, &w->enc);
     if (r)
         return r;
-    *started = 1;
-    if (reserve_planes(planes, (size_t)img->width * (size_t)chunk.height, img->n_channels,
+    w->started = 1;
+    if (reserve_planes(&w->planes, (size_t)img->width * (size_t)chunk.height, img->n_channels,
                        elem_size) != 0)
         return EXR_ERR_OUT_OF_MEMORY;
-    fill_planes(img, y, chunk.height, type, planes->bytes);
-    point_at_planes(enc->channels, enc->channel_count, img, planes->bytes, img->width, chunk.height,
-                    elem_size);
-    for (int i = 0; i < enc->channel_count; i++)
-        enc->channels[i].user_data_type = enc->channels[i].data_type;
-    r = exr_encoding_choose_default_routines(ctx, 0, enc);
-    if (!r && enc->compress_fn) {
-        library->compress = enc->compress_fn;
-        enc->compress_fn = compress_or_store_raw;
-        enc->encoding_user_data = library;
+    fill_planes(img, chunk.start_y, chunk.height, type, w->planes.bytes, w->row);
+    point_at_planes(w->enc.channels, w->enc.channel_count, img, w->planes.bytes, img->width,
+                    chunk.height, elem_size);
+    for (int i = 0; i < w->enc.channel_count; i++)
+        w->enc.channels[i].user_data_type = w->enc.channels[i].data_type;
+    r = exr_encoding_choose_default_routines(w->ctx, 0, &w->enc);
+    if (r)
+        return r;
+    if (w->enc.compress_fn) {
+        w->library_compress = w->enc.compress_fn;
+        w->enc.compress_fn = compress_or_store_raw;
     }
-    return r ? r : exr_encoding_run(ctx, 0, enc);
+    w->enc.encoding_user_data = w;
+    w->enc.yield_until_ready_fn = NULL; /* chunks finish out of order; the file orders them */
+    w->enc.write_fn = keep_chunk;
+    w->target = &job->chunks[index];
+    return exr_encoding_run(w->ctx, 0, &w->enc);
 }
 
-static int write_chunks(exr_context_t ctx, exr_stream *s, const sc_image *img, sc_pixel_type type)
+/* The worker's context, with the file's header. */
+static int open_worker(chunk_worker *w)
 {
-    int32_t lines = 0;
-    if (check(s, exr_get_scanlines_per_chunk(ctx, 0, &lines)) != 0)
+    const chunk_job *job = w->job;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.user_data = &w->stream;
+    init.error_handler_fn = keep_first_error;
+    init.write_fn = discard_write;
+    w->enc = (exr_encode_pipeline_t)EXR_ENCODE_PIPELINE_INITIALIZER;
+    w->row = malloc((size_t)job->img->width * sizeof *w->row);
+    if (!w->row)
+        return fail(&w->stream, "out of memory");
+    if (check(&w->stream, exr_start_write(&w->ctx, job->name, EXR_WRITE_FILE_DIRECTLY, &init)))
         return -1;
-    exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
-    plane_buffer planes = {NULL, 0};
-    library_compressor library = {NULL};
-    int started = 0;
-    exr_result_t r = EXR_ERR_SUCCESS;
-    for (int y = 0; !r && y < img->height; y += lines)
-        r = encode_chunk(ctx, &enc, &started, img, y, type, &planes, &library);
-    if (started)
-        exr_encoding_destroy(ctx, &enc);
-    free(planes.bytes);
-    return check(s, r);
+    return check(&w->stream,
+                 define_header(w->ctx, job->img, job->opt, job->attrs, job->n_attrs));
 }
 
-static int encode_exr(const char *name, const sc_image *img, sc_pixel_type type,
+/* Takes chunks until none is left or a worker failed. */
+static void *run_worker(void *arg)
+{
+    chunk_worker *w = arg;
+    chunk_job *job = w->job;
+    exr_stream *outer = reporting_to;
+    reporting_to = &w->stream;
+    int rc = open_worker(w);
+    for (int i; rc == 0 && !atomic_load(&job->failed) &&
+                (i = atomic_fetch_add(&job->next_chunk, 1)) < job->n_chunks;)
+        rc = check(&w->stream, encode_chunk(w, i));
+    if (rc != 0)
+        atomic_store(&job->failed, 1);
+    if (w->started)
+        exr_encoding_destroy(w->ctx, &w->enc);
+    if (w->ctx)
+        exr_finish(&w->ctx); /* an unfinished file to nowhere: its verdict does not matter */
+    free(w->planes.bytes);
+    free(w->row);
+    reporting_to = outer;
+    return NULL;
+}
+
+enum { MAX_EXR_THREADS = 64 };
+
+static int worker_count(const sc_exr_options *opt, int n_chunks)
+{
+    long n = opt->threads > 0 ? opt->threads : sysconf(_SC_NPROCESSORS_ONLN);
+    n = n < 1 ? 1 : n > MAX_EXR_THREADS ? MAX_EXR_THREADS : n;
+    return (int)(n < n_chunks ? n : n_chunks);
+}
+
+/* Runs the workers (the calling thread is one of them); the first failure's reason into s. */
+static int compress_chunks(chunk_job *job, exr_stream *s)
+{
+    chunk_worker workers[MAX_EXR_THREADS];
+    pthread_t threads[MAX_EXR_THREADS];
+    int n = worker_count(job->opt, job->n_chunks), started = 1;
+    for (int i = 0; i < n; i++)
+        workers[i] = (chunk_worker){.job = job};
+    while (started < n && pthread_create(&threads[started], NULL, run_worker, &workers[started]) == 0)
+        started++;
+    run_worker(&workers[0]);
+    for (int i = 1; i < started; i++)
+        pthread_join(threads[i], NULL);
+    for (int i = 0; i < started; i++)
+        if (workers[i].stream.message[0])
+            fail(s, "%s", workers[i].stream.message);
+    return atomic_load(&job->failed) ? fail(s, "encoding a chunk failed") : 0;
+}
+
+static int write_chunks(exr_context_t ctx, exr_stream *s, chunk_job *job)
+{
+    if (check(s, exr_get_scanlines_per_chunk(ctx, 0, &job->lines)) != 0)
+        return -1;
+    job->n_chunks = (job->img->height + job->lines - 1) / job->lines;
+    job->chunks = calloc((size_t)job->n_chunks, sizeof *job->chunks);
+    if (!job->chunks)
+        return fail(s, "out of memory");
+    int rc = compress_chunks(job, s);
+    for (int i = 0; rc == 0 && i < job->n_chunks; i++)
+        rc = check(s, exr_write_scanline_chunk(ctx, 0, i * job->lines, job->chunks[i].bytes,
+                                               job->chunks[i].size));
+    for (int i = 0; i < job->n_chunks; i++)
+        free(job->chunks[i].bytes);
+    free(job->chunks);
+    return rc;
+}
+
+static int encode_exr(const char *name, const sc_image *img, const sc_exr_options *opt,
                       const sc_image_attr *attrs, int n_attrs, exr_stream *s)
 {
     exr_context_initializer_t init = stream_initializer(s);
     exr_context_t ctx = NULL;
-    exr_pixel_type_t file_type = type == SC_PIXEL_HALF ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT;
+    chunk_job job = {.name = name, .img = img, .opt = opt, .attrs = attrs, .n_attrs = n_attrs};
+    atomic_init(&job.next_chunk, 0);
+    atomic_init(&job.failed, 0);
     reporting_to = s;
     int rc = check(s, exr_start_write(&ctx, name, EXR_WRITE_FILE_DIRECTLY, &init));
     if (rc == 0)
-        rc = check(s, define_header(ctx, img, file_type, attrs, n_attrs));
+        rc = check(s, define_header(ctx, img, opt, attrs, n_attrs));
     if (rc == 0)
-        rc = write_chunks(ctx, s, img, type);
+        rc = write_chunks(ctx, s, &job);
     if (ctx) {
         exr_result_t finished = exr_finish(&ctx); /* writes the chunk offset table */
         if (rc == 0)
@@ -352,21 +521,38 @@ static int write_bytes_atomically(const char *path, const exr_stream *s, char *e
     return sc_atomic_commit(f, err, errsize);
 }
 
-int sc_exr_write(const char *path, const sc_image *img, sc_pixel_type type,
-                 const sc_image_attr *attrs, int n_attrs, char *err, size_t errsize)
+static int check_options(exr_stream *s, const sc_exr_options *opt)
+{
+    if (!opt || (opt->type != SC_PIXEL_HALF && opt->type != SC_PIXEL_FLOAT) ||
+        (unsigned)opt->compression >= SC_EXR_COMPRESSION_COUNT || opt->threads < 0)
+        return fail(s, "invalid write options");
+    return 0;
+}
+
+int sc_exr_write_with(const char *path, const sc_image *img, const sc_exr_options *opt,
+                      const sc_image_attr *attrs, int n_attrs, char *err, size_t errsize)
 {
     exr_stream s = {.data = NULL};
-    int rc = check_image(&s, img);
+    int rc = check_options(&s, opt);
+    if (rc == 0)
+        rc = check_image(&s, img);
     if (rc == 0)
         rc = check_attrs(&s, attrs, n_attrs);
     if (rc == 0)
-        rc = encode_exr(path, img, type, attrs, n_attrs, &s);
+        rc = encode_exr(path, img, opt, attrs, n_attrs, &s);
     if (rc == 0)
         rc = write_bytes_atomically(path, &s, err, errsize);
     else
         report(err, errsize, path, s.message);
     free(s.data);
     return rc;
+}
+
+int sc_exr_write(const char *path, const sc_image *img, sc_pixel_type type,
+                 const sc_image_attr *attrs, int n_attrs, char *err, size_t errsize)
+{
+    sc_exr_options opt = {type, SC_EXR_ZIP, 0};
+    return sc_exr_write_with(path, img, &opt, attrs, n_attrs, err, errsize);
 }
 
 /* ---- reading ------------------------------------------------------------------------------ */

@@ -2,9 +2,9 @@
  *
  * The seam for the SIMD batch shading kernels: the rasterizer gathers the points of one span
  * (a row of a tile, or a block of vertices for Gouraud), this function turns them into colours.
- * In highp, scenes the batch shading kernel computes (lambert, normalized blinn-phong, GGX
- * cook-torrance; directional lights, inverse-square point and spot lights) go through it, on the instruction
- * set SHADECALC_ISA or CPUID chose; everything else through sc_shade per point. */
+ * In highp, scenes the batch shading kernel computes (sc_batch_plan_compile of batch.h) go
+ * through a plan of it, on the instruction set SHADECALC_ISA, --isa or CPUID chose; everything
+ * else through sc_shade per point. */
 #ifndef SHADECALC_RENDER_SHADE_SPAN_H
 #define SHADECALC_RENDER_SHADE_SPAN_H
 
@@ -16,20 +16,20 @@ typedef struct {
     double normal[3]; /* unit normal, facing the side being shaded */
 } render_shade_input;
 
-/* 1 and the kernel's uniforms if the batch shading kernel computes this scene's SPEC §6
- * equation (the per-light ambient terms c_amb ⊙ L_A,k join the global one); 0 otherwise. */
-int render_batch_scene(const sc_scene *s, sc_batch_scene *out);
-
-/* How a render shades: the scene and precision, and whether (and with what uniforms) the batch
- * kernel does it — decided once per render, not per span. */
+/* How a render shades: the scene and precision, and the plan of the batch shading kernel when
+ * it computes the scene — compiled once per render, shared by the threads. */
 typedef struct {
     const sc_scene *scene;
     sc_prec prec;
-    int batch; /* 1: through the kernel, with bs */
-    sc_batch_scene bs;
+    sc_batch_plan *plan; /* NULL: sc_shade per point */
 } render_shader;
 
-void render_shader_init(render_shader *sh, const sc_scene *scene, sc_prec prec);
+/* 1 with a plan of the kernel's tier (NULL: accurate) in highp; 0 with the reason in why when
+ * the points go through sc_shade (another precision, a scene the kernel does not compute, out
+ * of memory). */
+int render_shader_init(render_shader *sh, const sc_scene *scene, sc_prec prec, const char *tier,
+                       char *why, size_t size);
+void render_shader_free(render_shader *sh);
 
 /* rgb[3 i .. 3 i + 2] = L_o at in[i], seen from eye (v = normalize(eye − pos); v = n when the
  * point is the eye). */

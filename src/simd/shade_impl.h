@@ -108,6 +108,28 @@ static SC_INLINE vf tier_pow(int tier, vf x, vf y)
 
 #include "simd/spot_impl.h"
 
+/* Integer lobe exponents up to these are raised by binary powering instead of tier_pow: the
+ * error of the product of k roundings raised to powers is at most (2m − 1) 2^-24 relative
+ * (2^-17 at 64 for the accurate tier's 2^-15, 2^-15 at 256 for the fast tiers). */
+enum { POW_INT_MAX_ACCURATE = 64, POW_INT_MAX_FAST = 256 };
+
+/* x^m, m >= 1 the same in every lane: ceil(log2 m) squarings and popcount(m) products (Knuth
+ * TAOCP 4.6.3), m = 32 five squarings. x below `cutoff` = 2^(−100/m) gives 0, as lobe_pow_fast
+ * flushes below 2^-100, so that no power or product is subnormal (a microcode assist). */
+static SC_INLINE vf pow_int(vf x, unsigned m, vf cutoff)
+{
+    x = vf_select(vf_lt(x, cutoff), vf_set1(0.0f), x);
+    vf r = vf_set1(1.0f);
+    for (;;) {
+        if (m & 1u)
+            r = vf_mul(r, x);
+        m >>= 1;
+        if (!m)
+            return r;
+        x = vf_mul(x, x);
+    }
+}
+
 /* ---- vec3 ---- */
 
 typedef struct {
@@ -211,16 +233,28 @@ BATCH_N(length_bits11, 3, 1, length_f8)
 
 static const float inv_pi_f = 0.318309886183790671538f;
 
+/* What a shading call computes once from its scene: each spot light's uniforms, and the lobe
+ * exponent when it is an integer small enough for pow_int (else 0) with its flush cutoff. */
+typedef struct {
+    func_uniforms spots[SC_BATCH_MAX_LIGHTS];
+    unsigned lobe_m;
+    float lobe_cutoff;
+} shade_uniforms;
+
 /* The specular part of f for one light (n, v unit; l unit), 0 for Lambert. nt is the tier of
  * the normalizations. */
-static SC_INLINE vf specular(int tier, int nt, sc_batch_brdf brdf, const sc_batch_scene *s, v3 n, v3 v, v3 l, vf nl, vf nv)
+static SC_INLINE vf specular(int tier, int nt, sc_batch_brdf brdf, const sc_batch_scene *s,
+                             const shade_uniforms *u, v3 n, v3 v, v3 l, vf nl, vf nv)
 {
     v3 h = v3_add(l, v);
     vf inv_h = tier_rsqrt(nt, vf_max(v3_dot(h, h), vf_set1(FLT_MIN))); /* l = −v: h = 0 */
     /* n·h floored at 2^-40, not at 0: its square (GGX) must not underflow (a microcode assist) */
     vf nh = vf_max(vf_mul(v3_dot(n, h), inv_h), vf_set1(0x1p-40f));
-    if (brdf == SC_BATCH_BLINN_PHONG) /* (m+8)/(8π) (n·h)^m: RTR3 §7.6 */
-        return vf_mul(vf_set1((s->m + 8.0f) * (inv_pi_f / 8.0f)), tier_pow(tier, nh, vf_set1(s->m)));
+    if (brdf == SC_BATCH_BLINN_PHONG) { /* (m+8)/(8π) (n·h)^m: RTR3 §7.6 */
+        vf lobe = u->lobe_m ? pow_int(nh, u->lobe_m, vf_set1(u->lobe_cutoff))
+                            : tier_pow(tier, nh, vf_set1(s->m));
+        return vf_mul(vf_set1((s->m + 8.0f) * (inv_pi_f / 8.0f)), lobe);
+    }
     /* GGX D = α² / (π (n·h² (α² − 1) + 1)²); V = G2/(4 n·l n·v) for Smith height-correlated
      * = 1 / (2 (n·l √(n·v² (1 − α²) + α²) + n·v √(n·l² (1 − α²) + α²))) (Heitz 2014 eq. 99);
      * F = F0 + (1 − F0)(1 − v·h)^5 (Schlick 1994). */
@@ -267,7 +301,7 @@ static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt, const 
  * (x, y, z = r, g, b). */
 static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *const *in,
                                  float *const *out, size_t i, const sc_batch_scene *s,
-                                 const func_uniforms *spots)
+                                 const shade_uniforms *u)
 {
     int nt = tier == FAST8 ? FAST12 : tier;
     v3 n = v3_normalize(nt, v3_load(in, 0, i)), v = v3_normalize(nt, v3_load(in, 3, i));
@@ -277,13 +311,13 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
     for (int k = 0; k < s->n_lights; k++) {
         const sc_batch_light *lt = &s->lights[k];
         vf falloff;
-        v3 l = light_dir(tier, nt, lt, &spots[k], n, in, i, &falloff);
+        v3 l = light_dir(tier, nt, lt, &u->spots[k], n, in, i, &falloff);
         vf nl = v3_dot(n, l);
         vm lit = vm_and(vf_lt(vf_set1(0.0f), nl), vf_lt(vf_set1(0.0f), nv));
         vf w = vf_select(lit, vf_mul(nl, falloff), vf_set1(0.0f)); /* cos θ_i · falloff */
         v3 f = kd;
         if (brdf != SC_BATCH_LAMBERT) { /* unlit lanes drop the lobe: it may be ∞ or NaN there */
-            vf sp = vf_select(lit, specular(tier, nt, brdf, s, n, v, l, nl, nv), vf_set1(0.0f));
+            vf sp = vf_select(lit, specular(tier, nt, brdf, s, u, n, v, l, nl, nv), vf_set1(0.0f));
             f = (v3){vf_fma(ks.x, sp, kd.x), vf_fma(ks.y, sp, kd.y), vf_fma(ks.z, sp, kd.z)};
         }
         v3 e = v3_scale(v3_set1(lt->color), w);
@@ -292,23 +326,28 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
     v3_store(acc, out, i);
 }
 
-/* The arguments with, as params, the uniforms of each spot light, computed once per call. */
-static inline sc_batch_args with_spot_uniforms(const sc_batch_args *a, func_uniforms *spots)
+/* The arguments with, as params, the call's shade_uniforms. */
+static inline sc_batch_args with_shade_uniforms(const sc_batch_args *a, int tier,
+                                                shade_uniforms *u)
 {
     const sc_batch_scene *s = a->scene;
     for (int k = 0; k < s->n_lights && k < SC_BATCH_MAX_LIGHTS; k++)
         if (s->lights[k].kind == SC_BATCH_SPOT)
-            spot_uniforms_of_light(&s->lights[k], &spots[k]);
+            spot_uniforms_of_light(&s->lights[k], &u->spots[k]);
+    float most = tier == ACCURATE ? POW_INT_MAX_ACCURATE : POW_INT_MAX_FAST;
+    int integer = s->m >= 1.0f && s->m <= most && s->m == (float)(int)s->m;
+    u->lobe_m = integer ? (unsigned)s->m : 0u;
+    u->lobe_cutoff = integer ? (float)exp2(-100.0 / s->m) : 0.0f;
     sc_batch_args b = *a;
-    b.params = spots;
+    b.params = u;
     return b;
 }
 
 #define SHADE_LANE(name, tier, brdf)                                                              \
     static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
-                               const sc_batch_scene *s, const void *spots)                        \
+                               const sc_batch_scene *s, const void *u)                            \
     {                                                                                             \
-        shade_tier(tier, brdf, in, out, i, s, spots);                                             \
+        shade_tier(tier, brdf, in, out, i, s, u);                                                 \
     }
 #define SHADE_KERNEL(name, tier)                                                                  \
     SHADE_LANE(name##_lambert, tier, SC_BATCH_LAMBERT)                                            \
@@ -317,8 +356,8 @@ static inline sc_batch_args with_spot_uniforms(const sc_batch_args *a, func_unif
     void K(name)(const sc_batch_args *a);                                                         \
     void K(name)(const sc_batch_args *a)                                                          \
     {                                                                                             \
-        func_uniforms spots[SC_BATCH_MAX_LIGHTS];                                                 \
-        sc_batch_args b = with_spot_uniforms(a, spots);                                           \
+        shade_uniforms u;                                                                         \
+        sc_batch_args b = with_shade_uniforms(a, tier, &u);                                       \
         switch (a->scene->brdf) {                                                                 \
         case SC_BATCH_LAMBERT: run_n(&b, 9, 3, name##_lambert); break;                            \
         case SC_BATCH_BLINN_PHONG: run_n(&b, 9, 3, name##_blinn); break;                          \

@@ -74,3 +74,26 @@ expect "bad isa"                 2 '' 'error: render: --isa neon: expected scala
 # colours beyond the range (issue 11 §7): inf with a warning, never NaN (the SIMD kernel's 0·inf
 # pixels are shaded again by sc_shade)
 expect "overflow warns" 0 '' '~pixels overflow to inf (beyond the float range)' -- render --light 'point pos=0,0,1.2 I=3e38' --brdf 'blinn-phong m=32' --size 96x96 --exr-type float -o "$e2e_tmp/overflow.exr"
+# compression_of FILE: the value of the header's compression attribute (one byte after the
+# name, the type "compression" and a 4-byte size: none 0, rle 1, zips 2, zip 3, piz 4, pxr24 5)
+compression_of() {
+    at=$(LC_ALL=C grep -a -o -b -m 1 'compression' "$1" | head -n 1 | cut -d: -f1)
+    tail -c +$((at + 29)) "$1" | head -c 1 | od -An -tu1 | tr -d ' '
+}
+i=0
+for c in none rle zips zip piz pxr24; do
+    expect "compression $c"      0 '' '' -- render --size 40x36 --compression $c -j 2 -o "$imgdir/c-$c.exr"
+    check  "header says $c"      test "$(compression_of "$imgdir/c-$c.exr")" = $i
+    i=$((i + 1))
+done
+check  "compression changes size" test "$(wc -c <"$imgdir/c-none.exr")" -gt "$(wc -c <"$imgdir/c-zip.exr")"
+expect "zip on one thread"       0 '' '' -- render --size 40x36 --compression zip -j 1 -o "$imgdir/c-zi1.exr"
+# the files differ only in the command line's "-j 2" / "-j 1" and "c-zip" / "c-zi1"
+check  "threads do not change the file" test "$(cmp -l "$imgdir/c-zip.exr" "$imgdir/c-zi1.exr" | wc -l)" = 2
+expect "bad compression"         2 '' 'error: render: --compression dwaa: expected none|rle|zips|zip|piz|pxr24' -- render --compression dwaa -o "$imgdir/x.exr"
+# --tier: the fast tiers render; a tier for a scene the kernel lacks says why
+expect "tier bits8"              0 '' '' -- render --size 16x16 --tier bits8 -o "$imgdir/t8.exr"
+expect "bad tier"                2 '' 'error: render: --tier u1: expected accurate, bits12 or bits8' -- render --tier u1 -o "$imgdir/x.exr"
+expect "tier needs the kernel"   2 '' 'error: render: --tier bits12: the shading kernel does not compute this scene: brdf phong: the kernel computes lambert, blinn-phong and cook-torrance (GGX)' -- render --tier bits12 --brdf phong -o "$imgdir/x.exr"
+expect "tier needs highp"        2 '' 'error: render: --tier bits8: the shading kernel computes highp, not -p double' -- render --tier bits8 -p double -o "$imgdir/x.exr"
+check  "nothing written on tier errors" test ! -e "$imgdir/x.exr"

@@ -5,6 +5,7 @@
  * on every tier and instruction set, against the library's double functions (the references of
  * src/batch/reference_light.c) within each row's stated bound. */
 #include <float.h>
+#include <pthread.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -18,6 +19,7 @@
 
 #include "shadecalc/batch.h"
 #include "shadecalc/brdf.h"
+#include "shadecalc/scene.h"
 
 enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too */
 
@@ -109,17 +111,23 @@ static sc_batch_brdf_params brdf_params(sc_brdf_kind model, int form, int cos_fl
     return p;
 }
 
+/* n random inputs of e's domain in b */
+static void sampled_buffers(run_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
+{
+    buffers_alloc(b, e, n, params);
+    for (size_t i = 0; i < n; i++) {
+        float v[9];
+        sc_batch_sample(e, &rng, v);
+        for (int j = 0; j < e->n_in; j++)
+            b->in[j][i] = v[j];
+    }
+}
+
 static void check_brdf(const sc_batch_brdf_params *p, const char *what)
 {
     const sc_batch_entry *e = scalar_row("brdf");
     run_buffers b;
-    buffers_alloc(&b, e, N_BRDF, p);
-    for (size_t i = 0; i < N_BRDF; i++) {
-        float v[9];
-        sc_batch_sample(e, &rng, v);
-        for (int j = 0; j < 9; j++)
-            b.in[j][i] = v[j];
-    }
+    sampled_buffers(&b, e, N_BRDF, p);
     fill_references(e, &b);
     check_all_rows("brdf", &b, what);
     buffers_release(&b);
@@ -296,6 +304,227 @@ static void spot_by_hand(void **state)
     }
 }
 
+/* ---- the shading kernel's lobe exponents ---- */
+
+/* The shading kernel raises n·h to an integer m by binary powering (up to 64 in the accurate
+ * tier, 256 in the fast ones) and to other m by its pow: tests/unit/test_batch.c checks m = 32
+ * on 10^6 inputs; here the other paths, on 10^6 inputs each, every tier and instruction set:
+ * m = 40.5 (pow everywhere), 128 (pow in the accurate tier, powering in the fast ones; the
+ * largest m of the stated domain), 64 (the largest of the accurate tier's powering). */
+static void shade_lobe_exponents_within_bounds(void **state)
+{
+    (void)state;
+    enum { N_SHADE = 1000000 };
+    static const float exponents[] = {40.5f, 128.0f, 64.0f};
+    const sc_batch_entry *e = scalar_row("shade");
+    run_buffers b;
+    sampled_buffers(&b, e, N_SHADE, NULL);
+    for (size_t k = 0; k < sizeof exponents / sizeof exponents[0]; k++) {
+        sc_batch_scene scene;
+        char what[32];
+        sc_batch_scene_example(SC_BATCH_BLINN_PHONG, 1, 1, 3, &scene);
+        scene.m = exponents[k];
+        b.args.scene = &scene;
+        fill_references(e, &b);
+        snprintf(what, sizeof what, "m = %g", (double)exponents[k]);
+        check_all_rows("shade", &b, what);
+    }
+    buffers_release(&b);
+}
+
+/* ---- scene plans ---- */
+
+enum { N_PLAN = 1001, PLAN_THREADS = 4 };
+
+typedef struct {
+    float *in[9], *out[3];
+} plan_arrays;
+
+/* Uniform in [-1, 1) from the test's generator. */
+static double signed_unit(void)
+{
+    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+    return 2.0 * ((double)(rng >> 11) * 0x1p-53) - 1.0;
+}
+
+/* Random shading points: unit n, a viewer at distance 2..4 with n·v >= 0.2, p near the origin. */
+static void plan_points(plan_arrays *a, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        double nv[3], vv[3], dot = 0.0;
+        do {
+            double len_n = 0.0, len_v = 0.0;
+            for (int c = 0; c < 3; c++) {
+                nv[c] = signed_unit();
+                vv[c] = signed_unit();
+                len_n += nv[c] * nv[c];
+                len_v += vv[c] * vv[c];
+            }
+            dot = 0.0;
+            for (int c = 0; c < 3; c++) {
+                nv[c] /= sqrt(len_n);
+                vv[c] /= sqrt(len_v);
+                dot += nv[c] * vv[c];
+            }
+        } while (dot < 0.2);
+        for (int c = 0; c < 3; c++) {
+            a->in[c][i] = (float)nv[c];
+            a->in[3 + c][i] = (float)(3.0 * vv[c]);
+            a->in[6 + c][i] = (float)(0.5 * (signed_unit()));
+        }
+    }
+}
+
+/* L at point i of a by sc_shade in double, from the same float inputs. */
+static void shade_double(const sc_scene *scene, const plan_arrays *a, size_t i, double L[3])
+{
+    sc_shade_point at;
+    double n[3], v[3], len = 0.0;
+    for (int c = 0; c < 3; c++) {
+        n[c] = a->in[c][i];
+        v[c] = a->in[3 + c][i];
+        at.pos[c] = a->in[6 + c][i];
+        len += v[c] * v[c];
+    }
+    for (int c = 0; c < 3; c++)
+        at.v[c] = v[c] / sqrt(len);
+    assert_int_equal(sc_frame_make(n, NULL, &at.frame), 0);
+    sc_shade_result r = {.per_light = NULL};
+    sc_shade(SC_DOUBLE, scene, &at, &r);
+    memcpy(L, r.L, sizeof r.L);
+}
+
+static void make_plan_scene(const char *model, sc_light lights[4], sc_scene *scene)
+{
+    static const char *const specs[] = {
+        "directional dir=-1,-1,2 E=0.7", "point pos=2,-3,3 I=20",
+        "spot pos=0,-4,1 dir=0,1,0 I=30 spot=smoothstep inner=10 outer=40",
+        "point pos=-3,1,2 I=4,8,12"};
+    char err[256];
+    for (int k = 0; k < 4; k++)
+        if (sc_light_parse(specs[k], &lights[k], err, sizeof err) != 0)
+            fail_msg("%s: %s", specs[k], err);
+    *scene = (sc_scene){lights, 4, {0}, {0.05, 0.05, 0.05}};
+    if (sc_model_parse(model, &scene->model, err, sizeof err) != 0)
+        fail_msg("%s: %s", model, err);
+}
+
+/* A plan of each tier on each instruction set shades within the tier's bound of sc_shade in
+ * double (relative, plus the same allowance times the largest channel: the kernel's absolute
+ * term; twice, for the float rounding of the uniforms), for each BRDF the kernel has. */
+static void plans_match_sc_shade(void **state)
+{
+    (void)state;
+    static const char *const models[] = {"lambert", "blinn-phong m=40 spec=0.4",
+                                         "blinn-phong m=40.5 spec=0.4",
+                                         "cook-torrance alpha=0.3 f0=0.04"};
+    static const char *const tiers[] = {"accurate", "bits12", "bits8"};
+    plan_arrays a;
+    for (int j = 0; j < 9; j++)
+        assert_non_null(a.in[j] = malloc(N_PLAN * sizeof(float)));
+    for (int j = 0; j < 3; j++)
+        assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
+    plan_points(&a, N_PLAN);
+    for (int m = 0; m < 4; m++) {
+        sc_light lights[4];
+        sc_scene scene;
+        make_plan_scene(models[m], lights, &scene);
+        double (*ref)[3] = malloc(N_PLAN * sizeof *ref);
+        assert_non_null(ref);
+        for (size_t i = 0; i < N_PLAN; i++)
+            shade_double(&scene, &a, i, ref[i]);
+        for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+            for (int t = 0; t < 3 && sc_isa_supported((sc_isa)isa); t++) {
+                char why[256] = "";
+                sc_batch_plan *plan = sc_batch_plan_compile(&scene, tiers[t], (sc_isa)isa, why,
+                                                            sizeof why);
+                if (!plan)
+                    fail_msg("%s %s: %s", models[m], tiers[t], why);
+                const sc_batch_entry *e = sc_batch_plan_entry(plan);
+                assert_int_equal(e->isa, isa);
+                assert_string_equal(e->tier, tiers[t]);
+                sc_batch_plan_shade(plan, (const float *const *)a.in, a.out, N_PLAN);
+                for (size_t i = 0; i < N_PLAN; i++) {
+                    double peak = fmax(ref[i][0], fmax(ref[i][1], ref[i][2]));
+                    for (int c = 0; c < 3; c++) {
+                        double err = fabs(a.out[c][i] - ref[i][c]);
+                        if (err > 2.0 * e->bound_rel * (fabs(ref[i][c]) + peak) + 1e-6 * peak)
+                            fail_msg("%s %s %s point %zu channel %d: %.9g, sc_shade %.9g",
+                                     models[m], tiers[t], sc_isa_name(e->isa), i, c,
+                                     (double)a.out[c][i], ref[i][c]);
+                    }
+                }
+                sc_batch_plan_free(plan);
+            }
+        free(ref);
+    }
+    for (int j = 0; j < 9; j++)
+        free(a.in[j]);
+    for (int j = 0; j < 3; j++)
+        free(a.out[j]);
+}
+
+typedef struct {
+    const sc_batch_plan *plan;
+    const plan_arrays *a;
+    float *out[3];
+    size_t from, n;
+} plan_slice;
+
+static void *shade_slice(void *arg)
+{
+    plan_slice *s = arg;
+    const float *in[9];
+    float *out[3];
+    for (int j = 0; j < 9; j++)
+        in[j] = s->a->in[j] + s->from;
+    for (int j = 0; j < 3; j++)
+        out[j] = s->out[j] + s->from;
+    sc_batch_plan_shade(s->plan, in, out, s->n);
+    return NULL;
+}
+
+/* One plan shared by threads shading slices gives the bits of one thread shading all. */
+static void one_plan_many_threads(void **state)
+{
+    (void)state;
+    sc_light lights[4];
+    sc_scene scene;
+    make_plan_scene("cook-torrance alpha=0.3 f0=0.04", lights, &scene);
+    char why[256];
+    sc_batch_plan *plan = sc_batch_plan_compile(&scene, "bits12", sc_isa_active(), why, sizeof why);
+    assert_non_null(plan);
+    plan_arrays a;
+    float *shared[3];
+    for (int j = 0; j < 9; j++)
+        assert_non_null(a.in[j] = malloc(N_PLAN * sizeof(float)));
+    for (int j = 0; j < 3; j++) {
+        assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
+        assert_non_null(shared[j] = malloc(N_PLAN * sizeof(float)));
+    }
+    plan_points(&a, N_PLAN);
+    sc_batch_plan_shade(plan, (const float *const *)a.in, a.out, N_PLAN);
+    pthread_t threads[PLAN_THREADS];
+    plan_slice slices[PLAN_THREADS];
+    size_t per = N_PLAN / PLAN_THREADS + 1;
+    for (int t = 0; t < PLAN_THREADS; t++) {
+        size_t from = (size_t)t * per, to = from + per < N_PLAN ? from + per : N_PLAN;
+        slices[t] = (plan_slice){plan, &a, {shared[0], shared[1], shared[2]}, from, to - from};
+        assert_int_equal(pthread_create(&threads[t], NULL, shade_slice, &slices[t]), 0);
+    }
+    for (int t = 0; t < PLAN_THREADS; t++)
+        assert_int_equal(pthread_join(threads[t], NULL), 0);
+    for (int j = 0; j < 3; j++)
+        assert_memory_equal(a.out[j], shared[j], N_PLAN * sizeof(float));
+    sc_batch_plan_free(plan);
+    for (int j = 0; j < 9; j++)
+        free(a.in[j]);
+    for (int j = 0; j < 3; j++) {
+        free(a.out[j]);
+        free(shared[j]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -307,6 +536,9 @@ int main(void)
         cmocka_unit_test(attenuation_edges),
         cmocka_unit_test(spot_by_hand),
         cmocka_unit_test(spot_edges),
+        cmocka_unit_test(shade_lobe_exponents_within_bounds),
+        cmocka_unit_test(plans_match_sc_shade),
+        cmocka_unit_test(one_plan_many_threads),
     };
     return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);
 }

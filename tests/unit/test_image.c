@@ -17,6 +17,7 @@
 
 #include <OpenEXR/openexr.h>
 
+#include "image/half.h"
 #include "shadecalc/file.h"
 #include "shadecalc/image.h"
 #include "shadecalc/precision.h"
@@ -771,6 +772,158 @@ static void corrupted_bytes_never_crash(void **state)
     sc_image_free(&img);
 }
 
+/* ---- compressions and threads ------------------------------------------------------------ */
+
+static void write_with_ok(const char *path, const sc_image *img, sc_pixel_type type,
+                          sc_exr_compression c, int threads)
+{
+    char err[256] = "";
+    sc_exr_options opt = {type, c, threads};
+    if (sc_exr_write_with(path, img, &opt, NULL, 0, err, sizeof err) != 0)
+        fail_msg("writing %s (%s, %d threads): %s", path, sc_exr_compression_name(c), threads,
+                 err);
+}
+
+/* Each compression is the one the file's header names (read by OpenEXR itself) and gives the
+ * pixels back: exactly, but for pxr24 on float channels, which keeps 24 bits (the float
+ * rounded to 15 fraction bits, so within 2^-15 relative). */
+static void every_compression_round_trips(void **state)
+{
+    (void)state;
+    static const exr_compression_t named[SC_EXR_COMPRESSION_COUNT] = {
+        EXR_COMPRESSION_NONE, EXR_COMPRESSION_RLE, EXR_COMPRESSION_ZIPS,
+        EXR_COMPRESSION_ZIP,  EXR_COMPRESSION_PIZ, EXR_COMPRESSION_PXR24};
+    const char *names[] = {"R", "G", "B"};
+    sc_image img, back;
+    assert_int_equal(sc_image_init(&img, 37, 70, 3, names), 0);
+    fill_pattern(&img);
+    img.data[5] = 1.0f / 3.0f; /* not exact in 24 bits */
+    for (int c = 0; c < SC_EXR_COMPRESSION_COUNT; c++)
+        for (int t = 0; t < 2; t++) {
+            sc_pixel_type type = t ? SC_PIXEL_FLOAT : SC_PIXEL_HALF;
+            write_with_ok(in_dir(0, "c.exr"), &img, type, (sc_exr_compression)c, 3);
+            exr_context_t ctx = NULL;
+            exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+            exr_compression_t comp;
+            assert_int_equal(exr_start_read(&ctx, in_dir(0, "c.exr"), &init), 0);
+            assert_int_equal(exr_get_compression(ctx, 0, &comp), 0);
+            assert_int_equal(comp, named[c]);
+            exr_finish(&ctx);
+            read_back(in_dir(0, "c.exr"), &back, NULL, NULL);
+            int lossy = c == SC_EXR_PXR24 && type == SC_PIXEL_FLOAT;
+            for (size_t i = 0; i < 37 * 70 * 3; i++) {
+                float want = type == SC_PIXEL_HALF ? (float)sc_round_half(img.data[i]) : img.data[i];
+                double allowed = lossy ? 0x1p-15 * fabs(want) : 0.0;
+                if (!(fabs(back.data[i] - want) <= allowed))
+                    fail_msg("%s %s value %zu: %a, want %a", sc_exr_compression_name(c),
+                             t ? "float" : "half", i, back.data[i], want);
+            }
+            sc_image_free(&back);
+        }
+    sc_image_free(&img);
+}
+
+/* The bytes of a file do not depend on the number of threads that compressed its chunks (one
+ * chunk, fewer chunks than threads, many chunks). */
+static void threads_do_not_change_the_file(void **state)
+{
+    (void)state;
+    const char *names[] = {"R", "G", "B", "A"};
+    static const int heights[] = {1, 40, 120}; /* files under file_bytes' 64 KB */
+    for (int h = 0; h < 3; h++) {
+        sc_image img;
+        assert_int_equal(sc_image_init(&img, 61, heights[h], 4, names), 0);
+        for (size_t i = 0; i < (size_t)61 * (size_t)heights[h] * 4; i++)
+            img.data[i] = (float)sin(0.001 * (double)(i * i % 100003));
+        for (int c = 0; c < SC_EXR_COMPRESSION_COUNT; c++) {
+            write_with_ok(in_dir(0, "one.exr"), &img, SC_PIXEL_HALF, (sc_exr_compression)c, 1);
+            write_with_ok(in_dir(1, "many.exr"), &img, SC_PIXEL_HALF, (sc_exr_compression)c, 7);
+            size_t n1 = 0, n7 = 0;
+            unsigned char *one = file_bytes(in_dir(0, "one.exr"), &n1);
+            unsigned char *many = file_bytes(in_dir(1, "many.exr"), &n7);
+            assert_int_equal(n1, n7);
+            assert_memory_equal(one, many, n1);
+            free(one);
+            free(many);
+        }
+        sc_image_free(&img);
+    }
+}
+
+static void compression_names_and_bad_options(void **state)
+{
+    (void)state;
+    for (int c = 0; c < SC_EXR_COMPRESSION_COUNT; c++) {
+        sc_exr_compression back;
+        assert_int_equal(sc_exr_compression_parse(sc_exr_compression_name((sc_exr_compression)c),
+                                                  &back), 0);
+        assert_int_equal(back, c);
+    }
+    sc_exr_compression c;
+    assert_int_equal(sc_exr_compression_parse("dwaa", &c), -1);
+    assert_int_equal(sc_exr_compression_parse("ZIP", &c), -1);
+    assert_null(sc_exr_compression_name(SC_EXR_COMPRESSION_COUNT));
+    const char *names[] = {"Y"};
+    sc_image img;
+    assert_int_equal(sc_image_init(&img, 2, 2, 1, names), 0);
+    const sc_exr_options bad[] = {{SC_PIXEL_HALF, SC_EXR_COMPRESSION_COUNT, 0},
+                                  {SC_PIXEL_HALF, SC_EXR_ZIP, -1},
+                                  {(sc_pixel_type)7, SC_EXR_ZIP, 0}};
+    for (int i = 0; i < 3; i++) {
+        char err[256] = "";
+        assert_int_equal(sc_exr_write_with(in_dir(0, "bad.exr"), &img, &bad[i], NULL, 0, err,
+                                           sizeof err), -1);
+        assert_non_null(strstr(err, "invalid write options"));
+    }
+    assert_int_equal(entries_in_dir(), 0);
+    sc_image_free(&img);
+}
+
+/* The array conversion (F16C where present) has the bits of sc_half_from_double for every
+ * float of the exponents where the rounding is decided (float subnormals, 2^-26 .. 2^-13, the
+ * ones around 1, 2^14 .. 2^17, Inf/NaN), both signs; every float of all exponents when
+ * SHADECALC_EXHAUSTIVE is set (2^32 values, a few minutes). */
+static void check_halves_of_exponent(int exponent_field)
+{
+    enum { BLOCK = 1 << 16 };
+    static float in[BLOCK];
+    static uint16_t fast[BLOCK], slow[BLOCK];
+    for (uint32_t sign = 0; sign < 2; sign++)
+        for (uint32_t m0 = 0; m0 < (1u << 23); m0 += BLOCK) {
+            for (uint32_t i = 0; i < BLOCK; i++) {
+                uint32_t bits = sign << 31 | (uint32_t)exponent_field << 23 | (m0 + i);
+                memcpy(&in[i], &bits, sizeof bits);
+            }
+            image_halves_from_floats(in, fast, BLOCK, 0);
+            image_halves_from_floats(in, slow, BLOCK, 1);
+            if (memcmp(fast, slow, sizeof fast) != 0)
+                for (uint32_t i = 0; i < BLOCK; i++)
+                    if (fast[i] != slow[i])
+                        fail_msg("%a: 0x%04x, software 0x%04x", in[i], fast[i], slow[i]);
+        }
+}
+
+static void array_halves_match_the_software_rounding(void **state)
+{
+    (void)state;
+    static const int exponents[] = {0,   1,   101, 102, 103, 104, 105, 106, 107, 108,
+                                    109, 110, 111, 112, 113, 114, 126, 127, 141, 142,
+                                    143, 144, 255};
+    int all = getenv("SHADECALC_EXHAUSTIVE") != NULL;
+    for (int e = 0; e < (all ? 256 : (int)(sizeof exponents / sizeof exponents[0])); e++)
+        check_halves_of_exponent(all ? e : exponents[e]);
+    /* odd lengths: the tail after the last full vector */
+    float values[13];
+    uint16_t fast[13], slow[13];
+    for (int i = 0; i < 13; i++)
+        values[i] = 0.1f * (float)i - 0.55f;
+    for (size_t n = 0; n <= 13; n++) {
+        image_halves_from_floats(values, fast, n, 0);
+        image_halves_from_floats(values, slow, n, 1);
+        assert_memory_equal(fast, slow, n * sizeof *fast);
+    }
+}
+
 #define FILE_TEST(f) cmocka_unit_test_setup_teardown(f, make_dir, remove_dir)
 
 int main(void)
@@ -797,6 +950,10 @@ int main(void)
         FILE_TEST(every_truncation_of_a_file_is_refused),
         FILE_TEST(garbage_and_missing_files_are_refused),
         FILE_TEST(corrupted_bytes_never_crash),
+        FILE_TEST(every_compression_round_trips),
+        FILE_TEST(threads_do_not_change_the_file),
+        FILE_TEST(compression_names_and_bad_options),
+        cmocka_unit_test(array_halves_match_the_software_rounding),
     };
     return cmocka_run_group_tests_name("image", tests, NULL, NULL);
 }

@@ -209,7 +209,10 @@ static void tessellate(const sc_surface *s, int n, sc_mesh *m)
 
 static const sc_camera side_view = {{0.5, -3.2, 1.1}, {0, 0, 0}, {0, 0, 1}, 40};
 
-/* Tiles go to threads in any order; each pixel is computed the same: identical images. */
+/* Tiles go to threads in any order; each pixel is computed the same: identical images. Each
+ * tile clears its own pixels: `many` starts full of garbage (as a previous render would leave
+ * it) and S is not a multiple of the tile size, yet every pixel, the empty corners included,
+ * comes out as in `one`. */
 static void threads_give_the_same_image(void **state)
 {
     (void)state;
@@ -222,10 +225,16 @@ static void threads_give_the_same_image(void **state)
     sc_framebuffer one, many;
     assert_int_equal(sc_framebuffer_init(&one, S, S), 0);
     assert_int_equal(sc_framebuffer_init(&many, S, S), 0);
+    for (int i = 0; i < S * S; i++) {
+        many.rgba[4 * i + 3] = many.normal[3 * i] = 7.0f;
+        many.depth[i] = 1.0f;
+    }
     render_ok(&m, s, &b.scene, SC_SHADING_PHONG, &side_view, 1, &one);
     render_ok(&m, s, &b.scene, SC_SHADING_PHONG, &side_view, 5, &many);
     assert_memory_equal(one.rgba, many.rgba, 4 * S * S * sizeof(float));
     assert_memory_equal(one.depth, many.depth, S * S * sizeof(float));
+    assert_memory_equal(one.normal, many.normal, 3 * S * S * sizeof(float));
+    assert_true(isinf(one.depth[0]) && one.rgba[3] == 0.0f); /* a corner the sphere misses */
     sc_framebuffer_free(&one);
     sc_framebuffer_free(&many);
     sc_mesh_free(&m);
@@ -254,10 +263,12 @@ static void batch_kernel_matches_sc_shade(void **state)
     for (size_t k = 0; k < sizeof models / sizeof models[0]; k++) {
         sc_scene scene = {lights, 3, {0}, {0.1, 0.1, 0.1}};
         assert_int_equal(sc_model_parse(models[k], &scene.model, err, sizeof err), 0);
-        sc_batch_scene bs;
-        assert_int_equal(render_batch_scene(&scene, &bs), 1); /* the kernel's path is taken */
-        assert_int_equal(bs.brdf, (int)k);
-        assert_true(fabsf(bs.lights[1].dir[0] + 0.57735f) < 1e-6f); /* unit, toward the light */
+        sc_batch_plan *plan = sc_batch_plan_compile(&scene, "accurate", sc_isa_active(), err,
+                                                    sizeof err);
+        if (!plan) /* the kernel's path is taken */
+            fail_msg("%s: no plan: %s", models[k], err);
+        assert_string_equal(sc_batch_plan_entry(plan)->tier, "accurate");
+        sc_batch_plan_free(plan);
         sc_framebuffer ref, fast;
         assert_int_equal(sc_framebuffer_init(&ref, S, S), 0);
         assert_int_equal(sc_framebuffer_init(&fast, S, S), 0);
@@ -281,24 +292,81 @@ static void batch_kernel_matches_sc_shade(void **state)
 }
 
 /* What the kernel does not compute stays with sc_shade: other BRDFs, other falloffs, legacy
- * models. */
+ * models, ranges; the plan says which. */
 static void other_scenes_keep_sc_shade(void **state)
 {
     (void)state;
-    static const char *const lights[] = {"spot pos=0,0,3 dir=0,0,-1 I=5 atten=window rstart=1 rend=9",
-                                         "point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01",
-                                         "point pos=0,0,3 I=5"};
-    static const char *const models[] = {"lambert", "lambert", "phong m=20"};
-    for (int k = 0; k < 3; k++) {
+    static const struct {
+        const char *light, *model, *why;
+    } cases[] = {
+        {"spot pos=0,0,3 dir=0,0,-1 I=5 atten=window rstart=1 rend=9", "lambert", "light 1: the kernel's falloff"},
+        {"point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01", "lambert", "light 1: the kernel's falloff"},
+        {"point pos=0,0,3 I=5", "phong m=20", "brdf phong"},
+        {"point pos=0,0,3 I=5", "blinn-phong form=plain", "form=normalized only"},
+        {"point pos=0,0,3 I=5", "cook-torrance D=beckmann", "D=ggx"},
+        {"point pos=0,0,3 I=5", "cook-torrance ax=0.2 ay=0.4", "anisotropic"},
+        {"point pos=0,0,3 I=5", "opengl", "legacy models"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         scene_box b;
-        sc_batch_scene bs;
-        make_scene(&b, lights[k], models[k]);
-        assert_int_equal(render_batch_scene(&b.scene, &bs), 0);
+        char why[256] = "";
+        make_scene(&b, cases[k].light, cases[k].model);
+        assert_null(sc_batch_plan_compile(&b.scene, "accurate", sc_isa_active(), why, sizeof why));
+        if (!strstr(why, cases[k].why))
+            fail_msg("%s / %s: reason '%s' lacks '%s'", cases[k].light, cases[k].model, why,
+                     cases[k].why);
     }
     scene_box b;
-    sc_batch_scene bs;
-    make_scene(&b, "point pos=0,0,3 I=5", "opengl");
-    assert_int_equal(render_batch_scene(&b.scene, &bs), 0);
+    char why[256] = "";
+    make_scene(&b, "point pos=0,0,3 I=5", "lambert");
+    assert_null(sc_batch_plan_compile(&b.scene, "u7", sc_isa_active(), why, sizeof why));
+    assert_non_null(strstr(why, "tier u7"));
+}
+
+/* render's tier: each tier of the shading kernel stays within its bound of the double image
+ * (bits12: 2^-12, bits8: 2^-8 relative, plus the same absolute allowance), and the fast tiers
+ * really are different code (their images differ from the accurate one). */
+static void render_tiers_within_their_bounds(void **state)
+{
+    (void)state;
+    enum { S = 48 };
+    static const struct {
+        const char *tier;
+        double bound;
+    } tiers[] = {{"accurate", 0x1p-15}, {"bits12", 0x1p-12}, {"bits8", 0x1p-8}};
+    sc_surface *s = sphere();
+    sc_mesh m;
+    scene_box b;
+    char err[256];
+    tessellate(s, 1500, &m);
+    make_scene(&b, "point pos=2,-3,3 I=20", "cook-torrance alpha=0.3 f0=0.04");
+    sc_framebuffer ref, img[3];
+    assert_int_equal(sc_framebuffer_init(&ref, S, S), 0);
+    sc_render_params p = {.mesh = &m, .surface = s, .scene = &b.scene, .prec = SC_DOUBLE,
+                          .shading = SC_SHADING_PHONG, .camera = side_view, .threads = 1};
+    assert_int_equal(sc_render(&p, &ref, err, sizeof err), 0);
+    double peak = 0.0;
+    for (int i = 0; i < 4 * S * S; i++)
+        peak = fmax(peak, fabs(ref.rgba[i]));
+    for (int t = 0; t < 3; t++) {
+        assert_int_equal(sc_framebuffer_init(&img[t], S, S), 0);
+        p.prec = SC_HIGHP;
+        p.tier = tiers[t].tier;
+        assert_int_equal(sc_render(&p, &img[t], err, sizeof err), 0);
+        double worst = 0.0;
+        for (int i = 0; i < 4 * S * S; i++)
+            worst = fmax(worst, fabs(img[t].rgba[i] - ref.rgba[i]) /
+                                    (fabs(ref.rgba[i]) + 1e-3 * peak));
+        if (worst > 2.0 * tiers[t].bound + 1e-5) /* plus the float rounding of the inputs */
+            fail_msg("tier %s: relative error %g over its bound %g", tiers[t].tier, worst,
+                     tiers[t].bound);
+    }
+    assert_memory_not_equal(img[0].rgba, img[2].rgba, 4 * S * S * sizeof(float));
+    for (int t = 0; t < 3; t++)
+        sc_framebuffer_free(&img[t]);
+    sc_framebuffer_free(&ref);
+    sc_mesh_free(&m);
+    sc_surface_free(s);
 }
 
 /* The unit normal of the unit sphere where the ray through pixel (x, y)'s centre meets it
@@ -530,6 +598,7 @@ int main(void)
         cmocka_unit_test(threads_give_the_same_image),
         cmocka_unit_test(batch_kernel_matches_sc_shade),
         cmocka_unit_test(other_scenes_keep_sc_shade),
+        cmocka_unit_test(render_tiers_within_their_bounds),
         cmocka_unit_test(exact_sphere_normals_match_ray_intersection),
         cmocka_unit_test(comparison_ordering),
         cmocka_unit_test(compare_metric_by_hand),
