@@ -48,6 +48,15 @@ $(BUILD)/obj/bench/sleef_avx2.o: ISAFLAGS := -mavx2 -mfma
 $(BUILD)/obj/bench/peak_avx2.o: ISAFLAGS := -mavx2 -mfma
 endif
 
+# The plain loops of bench/libm_loops.c again as a user who tries -O3 -march=native -ffast-math
+# gets them, by gcc and by clang when each is installed (peer rows of `shadecalc bench`); not
+# instrumented by the sanitizers, whose runtimes differ between the two compilers.
+FASTMATH := -O3 -march=native -ffast-math -ffp-contract=fast
+$(BUILD)/obj/bench/fastmath_%.o: ISAFLAGS := $(FASTMATH)
+$(BUILD)/obj/bench/fastmath_%.o: SANFLAGS :=
+$(BUILD)/obj/bench/fastmath_gcc.o: CC := $(if $(shell command -v gcc),gcc,$(CC))
+$(BUILD)/obj/bench/fastmath_clang.o: CC := $(if $(shell command -v clang),clang,$(CC))
+
 # SLEEF (libsleef-dev) is optional: when found, `shadecalc bench` also times its AVX2 functions.
 SLEEF_LIBS := $(shell pkg-config --libs sleef 2>/dev/null)
 ifneq ($(SLEEF_LIBS),)

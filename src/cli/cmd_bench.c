@@ -186,12 +186,9 @@ static int run(int argc, char **argv)
     if (status != SC_EXIT_OK)
         return status < 0 ? SC_EXIT_OK : status;
     if (o.list) {
-        bench_list(stdout, o.format);
+        bench_list(stdout, o.format, o.run.kernels, o.run.n_kernels);
         return SC_EXIT_OK;
     }
-    if (!bench_sleef_available())
-        fprintf(stderr, "bench: SLEEF not found at build time (or no AVX2 here): no sleef-avx2 "
-                        "comparison rows (install libsleef-dev and rebuild to get them)\n");
     bench_machine m;
     bench_machine_measure(&m);
     bench_row *rows;

@@ -5,6 +5,23 @@ expect "help"          0 '~usage: shadecalc bench' '' -- bench --help
 expect "list pow"      0 '~pow          u1        scalar' '' -- bench --list
 expect "list shade"    0 '~shade        bits8' '' -- bench --list
 expect "list csv"      0 '~kernel,tier,isas,bound,domain' '' -- bench --list --format csv
+
+# --list as JSON, and only the kernels named (issue 11 §8)
+if "$SHADECALC" bench --list --format json pow exp >"$e2e_tmp/l.json" 2>"$e2e_tmp/err" &&
+    python3 - "$e2e_tmp/l.json" <<'PY'
+import json, sys
+rows = json.load(open(sys.argv[1]))
+assert {r["kernel"] for r in rows} == {"pow", "exp"}, rows
+assert all(r["bound_ulp"] is None or r["bound_ulp"] > 0 for r in rows), rows
+assert any(r["tier"] == "u1" and r["bound_ulp"] == 1 for r in rows), rows
+PY
+then echo "ok   list json filtered"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL list json filtered"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
+fi
+if "$SHADECALC" bench --list pow | awk 'NR > 1 && $1 != "pow" { bad = 1 } END { exit bad || NR < 2 }'
+then echo "ok   list filtered"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL list filtered: bench --list pow lists other kernels"; echo fail >>"$E2E_COUNTS"
+fi
 expect "bad kernel"    2 '' "error: bench: unknown kernel 'powf' (see 'shadecalc bench --list')" -- bench powf
 expect "bad isa"       2 '' "error: bench: --isa: unknown instruction set 'neon' (scalar, sse4.1, avx2)" -- bench --isa neon
 expect "bad tier"      2 '' "error: bench: --tier: unknown tier 'u7' (see 'shadecalc bench --list')" -- bench --tier u7
@@ -34,6 +51,19 @@ for r in rows:
         assert r["max_ulp"] <= r["bound_ulp"], r
 isas = {r["isa"] for r in rows}
 assert "libm" in isas and "scalar" in isas, isas
+assert "sleef" in doc, "SLEEF's version (or null) in the metadata"
+if doc["sleef"] is None:
+    assert doc["sleef_absent"], "why there are no SLEEF rows"
+for r in rows:
+    assert r["max_ulp"] >= 0 and r["not_correctly_rounded"] >= 0, r
+    dom = r["dominated_by"]
+    if dom is not None:  # a tier, dominated by a peer row no slower and no less accurate
+        assert r["bound_ulp"] is not None or r["bound_rel"] is not None, r
+        peer = [p for p in rows if p["kernel"] == r["kernel"] and p["n"] == r["n"] and
+                (p["isa"] + ("" if p["tier"] == "loop" else " " + p["tier"])) == dom]
+        assert peer and peer[0]["ns_per_elem"] <= r["ns_per_elem"] and peer[0]["max_ulp"] <= r["max_ulp"], (r, peer)
+    if r["isa"] in ("libm", "gcc-fast", "clang-fast", "sleef-avx2"):
+        assert dom is None, r
 base = [r for r in rows if r["isa"] == "scalar" and r["tier"] == "u1"]
 for r in rows:
     same = [b for b in base if b["kernel"] == r["kernel"] and b["n"] == r["n"]]
@@ -48,6 +78,19 @@ PY
 }
 check_json "json pow"       --n 256 --repeat 3 pow
 check_json "json isa tier"  --n 100 --repeat 1 --isa scalar --tier u1,bits12 exp2 log2
+
+# The peers a user would choose instead: the plain loop compiled with -ffast-math by gcc (and by
+# clang where installed), measured beside the tiers.
+expect "fast-math peer" 0 '~gcc-fast' '' -- bench --n 64 --repeat 1 --isa scalar --tier u1 exp
+# max ULP with enough digits to tell 0.5 from 0.50003, and the results not correctly rounded
+# (issue 16): the scalar u1 exp is correctly rounded on the sample, 0.49997 at most.
+expect "max ulp digits" 0 '~not_cr' '' -- bench --n 64 --repeat 1 --isa scalar --tier u1 exp
+if "$SHADECALC" bench --n 4096 --repeat 1 --isa scalar --tier u1 --format csv exp 2>"$e2e_tmp/err" |
+    awk -F, 'NR > 1 && $3 == "scalar" { found = 1; if ($11 == "0.5" || $11 >= 0.5 || $19 != 0) bad = 1 }
+             END { exit bad || !found }'
+then echo "ok   max ulp below one half"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL max ulp below one half: scalar u1 exp shown as 0.5 or not correctly rounded"; echo fail >>"$E2E_COUNTS"
+fi
 
 expect "csv header" 0 '~kernel,scene,isa,tier,n,ns_per_elem,ns_min,ns_max,speedup_vs_scalar,speedup_vs_libm_loop,max_ulp,mean_ulp,max_rel,max_abs,roofline_ns,bound_ulp,roofline_fraction,pareto' '' -- bench --n 64 --repeat 1 --format csv sqrt
 expect "shade scenes" 0 '~lambert 1d' '' -- bench --n 64 --repeat 1 --isa scalar --tier accurate shade
