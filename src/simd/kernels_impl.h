@@ -131,10 +131,20 @@ static inline vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float))
     return vf_loadu(br);
 }
 
+/* Polynomial loops are unrolled into straight-line FMAs with their constants in registers:
+ * gcc -O2 left them as loops that broadcast a coefficient per step (exp u1 2.60 to
+ * 1.44 ns, exp2 u4 0.91 to 0.48 ns in one bench run each). */
+#if defined(__GNUC__)
+#define SC_UNROLL _Pragma("GCC unroll 16")
+#else
+#define SC_UNROLL
+#endif
+
 /* c[0] x^(n−1) + … + c[n−1] (chebyfit order), by Horner's rule. */
-static inline vf poly(vf x, const float *c, int n)
+static SC_INLINE vf poly(vf x, const float *c, int n)
 {
     vf r = vf_set1(c[0]);
+    SC_UNROLL
     for (int i = 1; i < n; i++)
         r = vf_fma(r, x, vf_set1(c[i]));
     return r;
@@ -253,9 +263,10 @@ static inline vf on_doubles(vf x, vd (*f)(vd))
     return vf_from_vd(f(vd_from_lo(x)), f(vd_from_hi(x)));
 }
 
-static inline vd vd_horner(vd x, const double *c, int n) /* c[0] + c[1] x + … */
+static SC_INLINE vd vd_horner(vd x, const double *c, int n) /* c[0] + c[1] x + … */
 {
     vd r = vd_set1(c[n - 1]);
+    SC_UNROLL
     for (int i = n - 2; i >= 0; i--)
         r = vd_fma(r, x, vd_set1(c[i]));
     return r;
