@@ -12,7 +12,7 @@
 
 /* kernel_tier names, each defined once per instruction set */
 #define SC_BATCH_KERNELS(X)                                                                       \
-    X(exp2_u1) X(exp2_u4) X(exp2_bits12) X(exp2_bits8) X(exp_u1) X(exp_bits12) X(exp_bits8)       \
+    X(exp2_u1) X(exp2_u4) X(exp2_bits12) X(exp2_bits8) X(exp_u1) X(exp_u4) X(exp_bits12) X(exp_bits8)       \
     X(log2_u1) X(log2_u4) X(log2_bits12) X(log2_bits8) X(log_u1) X(log_u4) X(log_bits12)          \
     X(log_bits8) X(pow_u1) X(pow_bits12) X(pow_bits8) X(inversesqrt_u1) X(inversesqrt_u4)         \
     X(inversesqrt_bits11) X(sqrt_u1) X(dot_bits22) X(reflect_bits22) X(normalize_u3)            \
