@@ -56,6 +56,7 @@ $(BUILD)/obj/bench/fastmath_%.o: ISAFLAGS := $(FASTMATH)
 $(BUILD)/obj/bench/fastmath_%.o: SANFLAGS :=
 $(BUILD)/obj/bench/fastmath_gcc.o: CC := $(if $(shell command -v gcc),gcc,$(CC))
 $(BUILD)/obj/bench/fastmath_clang.o: CC := $(if $(shell command -v clang),clang,$(CC))
+$(BUILD)/obj/bench/report.o: CPPFLAGS += -DSC_BENCH_FLAGS='"$(OPT) $(FPFLAGS); peers $(FASTMATH)"'
 
 # SLEEF (libsleef-dev) is optional: when found, `shadecalc bench` also times its AVX2 functions.
 SLEEF_LIBS := $(shell pkg-config --libs sleef 2>/dev/null)

@@ -36,6 +36,8 @@ int bench_sleef_loops(const char *kernel, const bench_sleef **out);
 
 typedef struct {
     char cpu[128];
+    char date[32];  /* UTC, ISO 8601, when the run started */
+    double load[3]; /* load averages over 1, 5, 15 minutes at the start; -1 if unknown */
     double bandwidth; /* bytes per ns, measured: read + written by a stream loop */
     double lane_ops_ns; /* peak float lane operations per ns at 8 lanes (an FMA counts one):
                          * AVX2 FMA chains, or scalar chains times 8 without AVX2 */
@@ -53,7 +55,10 @@ typedef struct bench_row {
                                         the plain loops */
     const char *scene;               /* "lambert 1d", …; "" for non-shading kernels */
     size_t n;
-    double ns_per_elem, ns_min, ns_max;
+    double ns_per_elem, ns_min, ns_max; /* the median of the repeats, their minimum, maximum */
+    double ns_mad;        /* median absolute deviation of the repeats from the median */
+    double cv;            /* robust coefficient of variation: 1.4826 MAD / median */
+    int noisy;            /* cv > BENCH_NOISY_CV or max > 2 × median: rerun with more repeats */
     double speedup_vs_scalar, speedup_vs_libm;
     sc_batch_error err;
     size_t not_rounded;   /* normal results that differ from the reference rounded to float */
@@ -74,13 +79,16 @@ typedef struct {
     size_t sizes[4];
     int n_sizes;
     int repeat;
+    int warmup; /* untimed calls before the repeats (at least 1: it calibrates their length) */
 } bench_options;
+
+#define BENCH_NOISY_CV 0.05
 
 /* Runs every selected case; *rows is malloc'ed. Returns 0, or -1 out of memory. */
 int bench_run(const bench_options *o, const bench_machine *m, bench_row **rows, int *n_rows);
 
 /* ---- report (bench/report.c) ---- */
-enum { BENCH_TABLE, BENCH_CSV, BENCH_JSON };
+enum { BENCH_TABLE, BENCH_CSV, BENCH_JSON, BENCH_MARKDOWN };
 void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n);
 /* The table's kernels (those named; all when n_kernels is 0) as text, CSV or JSON */
 void bench_list(FILE *out, int format, const char *const *kernels, int n_kernels);

@@ -161,26 +161,48 @@ static int compare_doubles(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* ns per element: median, min, max of `repeat` samples, each of enough calls to last 0.2 ms */
-static void time_fn(sc_batch_fn fn, const sc_batch_args *a, int repeat, bench_row *r)
+/* The median of the sorted v[0..n) */
+static double median_sorted(const double *v, int n)
 {
-    double t0 = bench_now_ns();
-    fn(a); /* warm-up, and the calibration of calls per sample */
-    double once = bench_now_ns() - t0;
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Median, min, max, MAD and robust CV of n samples (sorted in place). */
+static void dispersion(double *samples, int n, bench_row *r)
+{
+    double dev[64];
+    qsort(samples, (size_t)n, sizeof samples[0], compare_doubles);
+    r->ns_per_elem = median_sorted(samples, n);
+    r->ns_min = samples[0];
+    r->ns_max = samples[n - 1];
+    for (int k = 0; k < n; k++)
+        dev[k] = fabs(samples[k] - r->ns_per_elem);
+    qsort(dev, (size_t)n, sizeof dev[0], compare_doubles);
+    r->ns_mad = median_sorted(dev, n);
+    r->cv = r->ns_per_elem > 0 ? 1.4826 * r->ns_mad / r->ns_per_elem : 0.0;
+    r->noisy = r->cv > BENCH_NOISY_CV || r->ns_max > 2.0 * r->ns_per_elem;
+}
+
+/* ns per element of `repeat` samples, each of enough calls to last 0.2 ms, after `warmup`
+ * untimed calls (the last of which calibrates the calls per sample) */
+static void time_fn(sc_batch_fn fn, const sc_batch_args *a, const bench_options *o, bench_row *r)
+{
+    double once = 0;
+    for (int w = 0; w < (o->warmup > 1 ? o->warmup : 1); w++) {
+        double t0 = bench_now_ns();
+        fn(a);
+        once = bench_now_ns() - t0;
+    }
     int calls = once > 0 && once < MIN_SAMPLE_NS ? (int)(MIN_SAMPLE_NS / once) + 1 : 1;
     double samples[64];
-    if (repeat > 64)
-        repeat = 64;
+    int repeat = o->repeat > 64 ? 64 : o->repeat;
     for (int k = 0; k < repeat; k++) {
-        t0 = bench_now_ns();
+        double t0 = bench_now_ns();
         for (int c = 0; c < calls; c++)
             fn(a);
         samples[k] = (bench_now_ns() - t0) / ((double)calls * (double)a->n);
     }
-    qsort(samples, (size_t)repeat, sizeof samples[0], compare_doubles);
-    r->ns_per_elem = samples[repeat / 2];
-    r->ns_min = samples[0];
-    r->ns_max = samples[repeat - 1];
+    dispersion(samples, repeat, r);
 }
 
 /* Whether got is the reference rounded to float; only normal results count (NaN for NaN). */
@@ -307,7 +329,7 @@ static void measure_entry(bench_state *st, const sc_batch_entry *e, bench_data *
     if (!r)
         return;
     sc_batch_args a = data_args(d);
-    time_fn(e->fn, &a, st->o->repeat, r);
+    time_fn(e->fn, &a, st->o, r);
     accuracy(e->fn, e, d, r);
     r->entry = e;
     roofline(st, e, d, bench_isa_width(e->isa), r);
@@ -324,7 +346,7 @@ static void measure_loop(bench_state *st, const sc_batch_entry *accurate, bench_
     if (!r)
         return;
     sc_batch_args a = data_args(d);
-    time_fn(loop, &a, st->o->repeat, r);
+    time_fn(loop, &a, st->o, r);
     accuracy(loop, accurate, d, r);
     r->roofline_ns = r->roofline_fraction = NAN; /* its operation count is the compiler's */
     progress(st, isa);
@@ -357,7 +379,7 @@ static void measure_sleef(bench_state *st, const sc_batch_entry *accurate, bench
         if (!r)
             return;
         sc_batch_args a = data_args(d);
-        time_fn(loops[i].fn, &a, st->o->repeat, r);
+        time_fn(loops[i].fn, &a, st->o, r);
         accuracy(loops[i].fn, accurate, d, r);
         r->roofline_ns = r->roofline_fraction = NAN; /* its operation count is SLEEF's */
         progress(st, "sleef");

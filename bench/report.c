@@ -101,11 +101,13 @@ static void table_row(FILE *out, const bench_row *r)
     bound_text(r->entry, bound, sizeof bound);
     if (isfinite(r->roofline_fraction))
         snprintf(roof, sizeof roof, "%.0f%%", 100.0 * r->roofline_fraction);
+    char cv[16];
+    snprintf(cv, sizeof cv, "%.1f%%%s", 100.0 * r->cv, r->noisy ? "!" : "");
     fprintf(out,
-            "%-11s %-17s %-10s %-8s %8zu %8.3f %8.3f %8.3f %7.1f %6.2f %6.2f %11.6g %7.3f %7zu "
+            "%-11s %-17s %-10s %-8s %8zu %9.3f %8.3f %8.3f %6s %7.1f %6.2f %6.2f %11.6g %7.3f %7zu "
             "%9.2e %-16s %6s %-6s %s\n",
             r->kernel, r->scene[0] ? r->scene : "-", r->isa, r->tier, r->n, r->ns_per_elem,
-            r->ns_min, r->ns_max, 1e3 / r->ns_per_elem, r->speedup_vs_scalar, r->speedup_vs_libm,
+            r->ns_min, r->ns_max, cv, 1e3 / r->ns_per_elem, r->speedup_vs_scalar, r->speedup_vs_libm,
             r->err.max_ulp, r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0,
             r->not_rounded, r->err.max_rel, bound, roof, r->pareto ? "*" : "",
             dominated_text(r, peer, sizeof peer));
@@ -130,7 +132,8 @@ static void csv_row(FILE *out, const bench_row *r)
     csv_number(out, stated_ulp(r), ",");
     csv_number(out, r->roofline_fraction, ",");
     char peer[40];
-    fprintf(out, "%d,%zu,%s\n", r->pareto, r->not_rounded, dominated_text(r, peer, sizeof peer));
+    fprintf(out, "%d,%zu,%s,%.6g,%.6g,%d\n", r->pareto, r->not_rounded,
+            dominated_text(r, peer, sizeof peer), r->ns_mad, r->cv, r->noisy);
 }
 
 static void json_number(FILE *out, const char *key, double v, int comma)
@@ -150,6 +153,9 @@ static void json_row(FILE *out, const bench_row *r, int last)
     json_number(out, "elems_per_s", 1e9 / r->ns_per_elem, 1);
     json_number(out, "ns_min", r->ns_min, 1);
     json_number(out, "ns_max", r->ns_max, 1);
+    json_number(out, "ns_mad", r->ns_mad, 1);
+    json_number(out, "cv", r->cv, 1);
+    fprintf(out, "\"noisy\": %s, ", r->noisy ? "true" : "false");
     json_number(out, "speedup_vs_scalar", r->speedup_vs_scalar, 1);
     json_number(out, "speedup_vs_libm_loop", r->speedup_vs_libm, 1);
     json_number(out, "max_ulp", r->err.max_ulp, 1);
@@ -167,46 +173,117 @@ static void json_row(FILE *out, const bench_row *r, int last)
             last ? "" : ",");
 }
 
-/* SLEEF in the JSON metadata: its version, or why its rows are missing */
-static void sleef_json(FILE *out)
+/* The compiler and flags of this build (the kernels; the peers add their own flags) */
+#if defined(__clang__)
+#define BENCH_COMPILER "clang " __clang_version__
+#elif defined(__GNUC__)
+#define BENCH_COMPILER "gcc " __VERSION__
+#else
+#define BENCH_COMPILER "unknown"
+#endif
+#ifndef SC_BENCH_FLAGS
+#define SC_BENCH_FLAGS "unknown"
+#endif
+
+/* The run's metadata in JSON: date, machine, load, compiler and flags, SLEEF */
+static void metadata_json(FILE *out, const bench_machine *m)
 {
+    fprintf(out, "{\n  \"machine\": {\"cpu\": \"%s\", \"stream_bandwidth_gb_s\": %.3g, "
+                 "\"peak_lane_ops_per_ns\": %.3g},\n",
+            m->cpu, m->bandwidth, m->lane_ops_ns);
+    fprintf(out, "  \"run\": {\"date\": \"%s\", \"load_average\": [%.2f, %.2f, %.2f], "
+                 "\"compiler\": \"",
+            m->date, m->load[0], m->load[1], m->load[2]);
+    json_text(out, BENCH_COMPILER);
+    fprintf(out, "\", \"flags\": \"");
+    json_text(out, SC_BENCH_FLAGS);
+    fprintf(out, "\"},\n");
     if (*bench_sleef_absence())
         fprintf(out, "  \"sleef\": null, \"sleef_absent\": \"%s\",\n", bench_sleef_absence());
     else
         fprintf(out, "  \"sleef\": \"%s\",\n", bench_sleef_version());
 }
 
-void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n)
+static void json_report(FILE *out, const bench_machine *m, const bench_row *rows, int n)
 {
-    if (format == BENCH_JSON) {
-        fprintf(out, "{\n  \"machine\": {\"cpu\": \"%s\", \"stream_bandwidth_gb_s\": %.3g, "
-                     "\"peak_lane_ops_per_ns\": %.3g},\n",
-                m->cpu, m->bandwidth, m->lane_ops_ns);
-        sleef_json(out);
-        fprintf(out, "  \"rows\": [\n");
-        for (int i = 0; i < n; i++)
-            json_row(out, &rows[i], i == n - 1);
-        fprintf(out, "  ]\n}\n");
-        return;
-    }
-    if (format == BENCH_CSV) {
-        fprintf(out, "kernel,scene,isa,tier,n,ns_per_elem,ns_min,ns_max,speedup_vs_scalar,"
-                     "speedup_vs_libm_loop,max_ulp,mean_ulp,max_rel,max_abs,roofline_ns,bound_ulp,"
-                     "roofline_fraction,pareto,not_correctly_rounded,dominated_by\n");
-        for (int i = 0; i < n; i++)
-            csv_row(out, &rows[i]);
-        return;
-    }
-    fprintf(out, "# %s; stream bandwidth %.3g GB/s; peak %.3g float lane-ops/ns at 8 lanes (an FMA "
-                 "counts one)\n",
-            m->cpu, m->bandwidth, m->lane_ops_ns);
+    metadata_json(out, m);
+    fprintf(out, "  \"rows\": [\n");
+    for (int i = 0; i < n; i++)
+        json_row(out, &rows[i], i == n - 1);
+    fprintf(out, "  ]\n}\n");
+}
+
+static void csv_report(FILE *out, const bench_row *rows, int n)
+{
+    fprintf(out, "kernel,scene,isa,tier,n,ns_per_elem,ns_min,ns_max,speedup_vs_scalar,"
+                 "speedup_vs_libm_loop,max_ulp,mean_ulp,max_rel,max_abs,roofline_ns,bound_ulp,"
+                 "roofline_fraction,pareto,not_correctly_rounded,dominated_by,ns_mad,cv,noisy\n");
+    for (int i = 0; i < n; i++)
+        csv_row(out, &rows[i]);
+}
+
+/* The header comment of the table and Markdown reports ("# " or "" before each line) */
+static void header_comment(FILE *out, const char *lead, const bench_machine *m)
+{
+    fprintf(out, "%s%s; %s; load %.2f; stream bandwidth %.3g GB/s; peak %.3g float lane-ops/ns at 8 "
+                 "lanes (an FMA counts one); %s, %s\n",
+            lead, m->cpu, m->date, m->load[0], m->bandwidth, m->lane_ops_ns, BENCH_COMPILER,
+            SC_BENCH_FLAGS);
     if (*bench_sleef_absence())
-        fprintf(out, "# %s\n", bench_sleef_absence());
-    fprintf(out, "# not_cr: results not the reference rounded to float; dominated_by: a peer row no "
-                 "slower and no less accurate\n");
-    fprintf(out, "%-11s %-17s %-10s %-8s %8s %8s %8s %8s %7s %6s %6s %11s %7s %7s %9s %-16s %6s %-6s %s\n",
-            "kernel", "scene", "isa", "tier", "n", "ns/elem", "min", "max", "Melem/s", "xscal",
-            "xlibm", "max_ulp", "mean", "not_cr", "max_rel", "bound", "roof", "pareto", "dominated_by");
+        fprintf(out, "%s%s\n", lead, bench_sleef_absence());
+    fprintf(out, "%smedian_ns: the median of the repeats; cv: 1.4826 MAD / median, ! where noisy "
+                 "(cv > %.0f%% or max > 2 median); not_cr: results not the reference rounded to "
+                 "float; dominated_by: a peer row no slower and no less accurate\n",
+            lead, 100.0 * BENCH_NOISY_CV);
+}
+
+static int noisy_rows(const bench_row *rows, int n)
+{
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        k += rows[i].noisy;
+    return k;
+}
+
+static void markdown_report(FILE *out, const bench_machine *m, const bench_row *rows, int n)
+{
+    header_comment(out, "", m);
+    fprintf(out, "\n| kernel | scene | isa | tier | n | median ns | cv | max ULP | not_cr | bound | "
+                 "pareto | dominated by |\n|---|---|---|---|---:|---:|---:|---:|---:|---|---|---|\n");
+    for (int i = 0; i < n; i++) {
+        const bench_row *r = &rows[i];
+        char bound[32], peer[40];
+        fprintf(out, "| %s | %s | %s | %s | %zu | %.4g | %.1f%%%s | %.6g | %zu | %s | %s | %s |\n",
+                r->kernel, r->scene, r->isa, r->tier, r->n, r->ns_per_elem, 100.0 * r->cv,
+                r->noisy ? " !" : "", r->err.max_ulp, r->not_rounded,
+                bound_text(r->entry, bound, sizeof bound), r->pareto ? "*" : "",
+                dominated_text(r, peer, sizeof peer));
+    }
+}
+
+static void table_report(FILE *out, const bench_machine *m, const bench_row *rows, int n)
+{
+    header_comment(out, "# ", m);
+    fprintf(out, "%-11s %-17s %-10s %-8s %8s %9s %8s %8s %6s %7s %6s %6s %11s %7s %7s %9s %-16s %6s %-6s %s\n",
+            "kernel", "scene", "isa", "tier", "n", "median_ns", "min", "max", "cv", "Melem/s",
+            "xscal", "xlibm", "max_ulp", "mean", "not_cr", "max_rel", "bound", "roof", "pareto",
+            "dominated_by");
     for (int i = 0; i < n; i++)
         table_row(out, &rows[i]);
+    int noisy = noisy_rows(rows, n);
+    if (noisy)
+        fprintf(out, "# %d of %d rows are noisy (!): rerun with more --repeat, on an idle machine\n",
+                noisy, n);
+}
+
+void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n)
+{
+    if (format == BENCH_JSON)
+        json_report(out, m, rows, n);
+    else if (format == BENCH_CSV)
+        csv_report(out, rows, n);
+    else if (format == BENCH_MARKDOWN)
+        markdown_report(out, m, rows, n);
+    else
+        table_report(out, m, rows, n);
 }

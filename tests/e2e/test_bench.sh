@@ -27,7 +27,32 @@ expect "bad isa"       2 '' "error: bench: --isa: unknown instruction set 'neon'
 expect "bad tier"      2 '' "error: bench: --tier: unknown tier 'u7' (see 'shadecalc bench --list')" -- bench --tier u7
 expect "bad n"         2 '' "error: bench: --n 0: expected element counts 1..268435456" -- bench --n 0
 expect "bad repeat"    2 '' "error: bench: --repeat 99: expected an integer 1..64" -- bench --repeat 99
-expect "bad format"    2 '' "error: bench: unknown format 'xml' (table, csv, json)" -- bench --format xml
+expect "bad format"    2 '' "error: bench: unknown format 'xml' (table, csv, json, markdown)" -- bench --format xml
+expect "bad warmup"    2 '' "error: bench: --warmup 0: expected an integer 1..1000" -- bench --warmup 0
+expect "bad output"    1 '' "error: bench: $e2e_tmp/no/such/dir/r.json: No such file or directory" -- bench --n 16 --repeat 1 --isa scalar --tier u1 -o "$e2e_tmp/no/such/dir/r.json" sqrt
+
+# -o FILE: the format from the extension, the run's metadata in the JSON, dispersion per row
+# (issue 14 §4); nothing on standard output.
+if "$SHADECALC" bench --n 256 --repeat 5 --warmup 2 --isa scalar -o "$e2e_tmp/r.json" exp >"$e2e_tmp/out" 2>"$e2e_tmp/err" &&
+    [ ! -s "$e2e_tmp/out" ] && python3 - "$e2e_tmp/r.json" <<'PY'
+import json, re, sys
+doc = json.load(open(sys.argv[1]))
+run = doc["run"]
+assert re.match(r"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ$", run["date"]), run
+assert len(run["load_average"]) == 3 and run["compiler"] and run["flags"], run
+for r in doc["rows"]:
+    assert r["cv"] >= 0 and r["ns_mad"] >= 0 and r["noisy"] in (True, False), r
+    assert r["noisy"] == (r["cv"] > 0.05 or r["ns_max"] > 2 * r["ns_per_elem"]), r
+PY
+then echo "ok   output json"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL output json"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
+fi
+if "$SHADECALC" bench --n 64 --repeat 1 --isa scalar --tier u1 -o "$e2e_tmp/r.md" sqrt 2>"$e2e_tmp/err" &&
+    grep -q '^| kernel | scene | isa | tier | n | median ns |' "$e2e_tmp/r.md" &&
+    grep -q '^| sqrt |  | scalar | u1 | 64 |' "$e2e_tmp/r.md"
+then echo "ok   output markdown"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL output markdown"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
+fi
 
 # A small run as JSON, read by a real parser: the fields every row must carry, the baselines
 # always present, accuracy within the stated bounds, speedups consistent with the times.
@@ -37,7 +62,7 @@ check_json() {
         python3 - "$e2e_tmp/b.json" <<'PY'
 import json, sys
 doc = json.load(open(sys.argv[1]))
-keys = ["kernel", "isa", "tier", "n", "ns_per_elem", "ns_min", "ns_max", "speedup_vs_scalar",
+keys = ["kernel", "isa", "tier", "n", "ns_per_elem", "ns_min", "ns_max", "ns_mad", "cv", "noisy", "speedup_vs_scalar",
         "speedup_vs_libm_loop", "max_ulp", "mean_ulp", "max_rel", "max_abs", "bound_ulp",
         "roofline_fraction"]
 rows = doc["rows"]
