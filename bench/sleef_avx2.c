@@ -41,32 +41,24 @@ static void pad_tail(const float *p, float *b, size_t count)
         b[k] = k < count ? p[k] : 1.0f;
 }
 
-SLEEF_LOOP(pow_u10, Sleef_powf8_u10avx2(x, y))
-SLEEF_LOOP(exp_u10, Sleef_expf8_u10avx2(x))
-SLEEF_LOOP(exp2_u10, Sleef_exp2f8_u10avx2(x))
-SLEEF_LOOP(exp2_u35, Sleef_exp2f8_u35avx2(x))
-SLEEF_LOOP(log_u10, Sleef_logf8_u10avx2(x))
-SLEEF_LOOP(log_u35, Sleef_logf8_u35avx2(x))
-SLEEF_LOOP(log2_u10, Sleef_log2f8_u10avx2(x))
-SLEEF_LOOP(log2_u35, Sleef_log2f8_u35avx2(x))
-SLEEF_LOOP(sin_u10, Sleef_sinf8_u10avx2(x))
-SLEEF_LOOP(sin_u35, Sleef_sinf8_u35avx2(x))
-SLEEF_LOOP(cos_u10, Sleef_cosf8_u10avx2(x))
-SLEEF_LOOP(cos_u35, Sleef_cosf8_u35avx2(x))
-SLEEF_LOOP(acos_u10, Sleef_acosf8_u10avx2(x))
-SLEEF_LOOP(acos_u35, Sleef_acosf8_u35avx2(x))
-SLEEF_LOOP(atan2_u10, Sleef_atan2f8_u10avx2(x, y))
-SLEEF_LOOP(atan2_u35, Sleef_atan2f8_u35avx2(x, y))
-SLEEF_LOOP(sqrt_u05, Sleef_sqrtf8_u05avx2(x))
+/* kernel, SLEEF's tier, the vector expression */
+#define SLEEF_FUNCTIONS(X)                                                                        \
+    X(pow, u10, Sleef_powf8_u10avx2(x, y))                                                        \
+    X(exp, u10, Sleef_expf8_u10avx2(x))                                                           \
+    X(exp2, u10, Sleef_exp2f8_u10avx2(x)) X(exp2, u35, Sleef_exp2f8_u35avx2(x))                   \
+    X(log, u10, Sleef_logf8_u10avx2(x)) X(log, u35, Sleef_logf8_u35avx2(x))                       \
+    X(log2, u10, Sleef_log2f8_u10avx2(x)) X(log2, u35, Sleef_log2f8_u35avx2(x))                   \
+    X(sin, u10, Sleef_sinf8_u10avx2(x)) X(sin, u35, Sleef_sinf8_u35avx2(x))                       \
+    X(cos, u10, Sleef_cosf8_u10avx2(x)) X(cos, u35, Sleef_cosf8_u35avx2(x))                       \
+    X(acos, u10, Sleef_acosf8_u10avx2(x)) X(acos, u35, Sleef_acosf8_u35avx2(x))                   \
+    X(atan2, u10, Sleef_atan2f8_u10avx2(x, y)) X(atan2, u35, Sleef_atan2f8_u35avx2(x, y))         \
+    X(sqrt, u05, Sleef_sqrtf8_u05avx2(x))
 
-static const bench_sleef sleef_loops[] = {
-    {"pow", "u10", pow_u10},     {"exp", "u10", exp_u10},     {"exp2", "u10", exp2_u10},
-    {"exp2", "u35", exp2_u35},   {"log", "u10", log_u10},     {"log", "u35", log_u35},
-    {"log2", "u10", log2_u10},   {"log2", "u35", log2_u35},   {"sin", "u10", sin_u10},
-    {"sin", "u35", sin_u35},     {"cos", "u10", cos_u10},     {"cos", "u35", cos_u35},
-    {"acos", "u10", acos_u10},   {"acos", "u35", acos_u35},   {"atan2", "u10", atan2_u10},
-    {"atan2", "u35", atan2_u35}, {"sqrt", "u05", sqrt_u05},
-};
+#define SLEEF_DEFINE(kernel, tier, expr) SLEEF_LOOP(kernel##_##tier, expr)
+SLEEF_FUNCTIONS(SLEEF_DEFINE)
+
+#define SLEEF_ROW(kernel, tier, expr) {#kernel, #tier, kernel##_##tier},
+static const bench_sleef sleef_loops[] = {SLEEF_FUNCTIONS(SLEEF_ROW)};
 
 int bench_sleef_available(void) { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
 
