@@ -174,8 +174,12 @@ static void json_row(FILE *out, const bench_row *r, int last)
 }
 
 /* The compiler and flags of this build (the kernels; the peers add their own flags) */
+#define BENCH_STR2(x) #x
+#define BENCH_STR(x) BENCH_STR2(x)
 #if defined(__clang__)
-#define BENCH_COMPILER "clang " __clang_version__
+#define BENCH_COMPILER                                                                            \
+    "clang " BENCH_STR(__clang_major__) "." BENCH_STR(__clang_minor__) "." BENCH_STR(         \
+        __clang_patchlevel__)
 #elif defined(__GNUC__)
 #define BENCH_COMPILER "gcc " __VERSION__
 #else
