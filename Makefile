@@ -51,6 +51,17 @@ $(BUILD)/obj/bench/sleef_avx2.o: ISAFLAGS := -mavx2 -mfma
 $(BUILD)/obj/bench/peak_avx2.o: ISAFLAGS := -mavx2 -mfma
 endif
 
+# The plain loops of bench/libm_loops.c again as a user who tries -O3 -march=native -ffast-math
+# gets them, by gcc and by clang when each is installed, whatever CC is (peer rows of
+# `shadecalc bench`); not
+# instrumented by the sanitizers, whose runtimes differ between the two compilers.
+FASTMATH := -O3 -march=native -ffast-math -ffp-contract=fast
+$(BUILD)/obj/bench/fastmath_%.o: ISAFLAGS := $(FASTMATH)
+$(BUILD)/obj/bench/fastmath_%.o: SANFLAGS :=
+$(BUILD)/obj/bench/fastmath_gcc.o: override CC := $(if $(shell command -v gcc),gcc,$(CC))
+$(BUILD)/obj/bench/fastmath_clang.o: override CC := $(if $(shell command -v clang),clang,$(CC))
+$(BUILD)/obj/bench/report.o: CPPFLAGS += -DSC_BENCH_FLAGS='"$(OPT) $(FPFLAGS); peers $(FASTMATH)"'
+
 # SLEEF (libsleef-dev) is optional: when found, `shadecalc bench` also times its AVX2 functions.
 # NO_SLEEF=1 builds as if it were absent (the tests must pass either way).
 ifneq ($(NO_SLEEF),1)

@@ -12,6 +12,10 @@
 
 /* The loop for a kernel, with the project's ordinary flags; NULL if none. */
 sc_batch_fn bench_libm_loop(const char *kernel);
+/* The same loops compiled with -O3 -march=native -ffast-math by gcc and by clang
+ * (bench/fastmath_*.c); NULL if none, or if that compiler was not installed at build time. */
+sc_batch_fn bench_fast_gcc_loop(const char *kernel);
+sc_batch_fn bench_fast_clang_loop(const char *kernel);
 
 /* ---- SLEEF's AVX2 functions (bench/sleef_avx2.c; optional, built when SLEEF is found) ---- */
 
@@ -22,6 +26,9 @@ typedef struct {
 
 /* 1 if the binary has SLEEF and the CPU runs its AVX2 functions. */
 int bench_sleef_available(void);
+/* Why there are no SLEEF rows ("" when there are), and SLEEF's version ("" without it). */
+const char *bench_sleef_absence(void);
+const char *bench_sleef_version(void);
 /* The SLEEF loops for a kernel: *out points at the first of the returned count. */
 int bench_sleef_loops(const char *kernel, const bench_sleef **out);
 
@@ -29,6 +36,8 @@ int bench_sleef_loops(const char *kernel, const bench_sleef **out);
 
 typedef struct {
     char cpu[128];
+    char date[32];  /* UTC, ISO 8601, when the run started */
+    double load[3]; /* load averages over 1, 5, 15 minutes at the start; -1 if unknown */
     double bandwidth; /* bytes per ns, measured: read + written by a stream loop */
     double lane_ops_ns; /* peak float lane operations per ns at 8 lanes (an FMA counts one):
                          * AVX2 FMA chains, or scalar chains times 8 without AVX2 */
@@ -41,17 +50,24 @@ double bench_peak_avx2(void);
 
 /* ---- cases: kernel × isa × tier (× scene for shade) × size ---- */
 
-typedef struct {
-    const char *kernel, *isa, *tier; /* isa "libm" and tier "loop" for the plain loop */
+typedef struct bench_row {
+    const char *kernel, *isa, *tier; /* isa "libm", "gcc-fast", "clang-fast" and tier "loop" for
+                                        the plain loops */
     const char *scene;               /* "lambert 1d", …; "" for non-shading kernels */
     size_t n;
-    double ns_per_elem, ns_min, ns_max;
+    double ns_per_elem, ns_min, ns_max; /* the median of the repeats, their minimum, maximum */
+    double ns_mad;        /* median absolute deviation of the repeats from the median */
+    double cv;            /* robust coefficient of variation: 1.4826 MAD / median */
+    int noisy;            /* cv > BENCH_NOISY_CV or max > 2 × median: rerun with more repeats */
     double speedup_vs_scalar, speedup_vs_libm;
     sc_batch_error err;
-    const sc_batch_entry *entry; /* the table row measured (its bounds); NULL: libm, SLEEF */
+    size_t not_rounded;   /* normal results that differ from the reference rounded to float */
+    const sc_batch_entry *entry; /* the table row measured (its bounds); NULL: a peer row */
     double roofline_ns;   /* max(compute bound, memory bound) per element */
     double roofline_fraction; /* roofline_ns / ns_per_elem */
     int pareto;           /* not beaten in both error and speed among the kernel's rows */
+    const struct bench_row *dominated_by; /* a tier's first peer row (libm, gcc-fast,
+                                            clang-fast, SLEEF) no slower and no less accurate */
 } bench_row;
 
 typedef struct {
@@ -63,14 +79,20 @@ typedef struct {
     size_t sizes[4];
     int n_sizes;
     int repeat;
+    int warmup; /* untimed calls before the repeats (at least 1: it calibrates their length) */
 } bench_options;
+
+#define BENCH_NOISY_CV 0.05
 
 /* Runs every selected case; *rows is malloc'ed. Returns 0, or -1 out of memory. */
 int bench_run(const bench_options *o, const bench_machine *m, bench_row **rows, int *n_rows);
 
 /* ---- report (bench/report.c) ---- */
-enum { BENCH_TABLE, BENCH_CSV, BENCH_JSON };
+enum { BENCH_TABLE, BENCH_CSV, BENCH_JSON, BENCH_MARKDOWN };
 void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n);
-void bench_list(FILE *out, int format);
+/* The table's kernels (those named; all when n_kernels is 0) as text, CSV or JSON */
+void bench_list(FILE *out, int format, const char *const *kernels, int n_kernels);
+/* Whether name is in list (an empty list selects everything). */
+int bench_selected(const char *name, const char *const *list, int n);
 
 #endif

@@ -2,12 +2,14 @@
  * on the same inputs — time (median of K repeats after a warm-up, min, max), accuracy against
  * the double reference, speedups against the scalar accurate kernel and the libm loop, the
  * roofline bound. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bench/bench.h"
 #include "bench/timer.h"
+#include "shadecalc/accuracy.h"
 #include "cli/progress.h"
 
 enum { ACCURACY_SAMPLE = 1 << 16, MIN_SAMPLE_NS = 200000, MAX_ROWS = 4096 };
@@ -55,30 +57,79 @@ static int inputs_read(const sc_batch_entry *e, const sc_batch_scene *s)
 
 typedef struct {
     float *in[9], *out[3];
-    double *ref; /* (n_out + 1) per element, for the first `checked` elements */
-    size_t n, checked;
+    size_t n;
+} bench_arrays;
+
+/* Times are taken on `timed`: inputs uniform in value over the domain, the ordinary inputs of
+ * a user (the test distribution's log-uniform magnitudes would time microcode assists on
+ * subnormal intermediates in every row). Accuracy is measured on `checked`: the test
+ * distribution (sc_batch_sample), ACCURACY_SAMPLE elements at most. */
+typedef struct {
+    bench_arrays timed, checked;
+    double *ref; /* (n_out + 1) per element of `checked` */
+    size_t n;
     sc_batch_scene scene;
     int has_scene;
     const void *params; /* the kernel's test parameters (batch table) */
 } bench_data;
 
-static void data_free(bench_data *d)
+static void arrays_free(bench_arrays *b)
 {
     for (int j = 0; j < 9; j++)
-        free(d->in[j]);
+        free(b->in[j]);
     for (int j = 0; j < 3; j++)
-        free(d->out[j]);
+        free(b->out[j]);
+}
+
+static void data_free(bench_data *d)
+{
+    arrays_free(&d->timed);
+    arrays_free(&d->checked);
     free(d->ref);
 }
 
-static sc_batch_args data_args(bench_data *d)
+static sc_batch_args arrays_args(const bench_data *d, const bench_arrays *b)
 {
-    sc_batch_args a = {{0}, {0}, d->n, d->has_scene ? &d->scene : NULL, d->params};
+    sc_batch_args a = {{0}, {0}, b->n, d->has_scene ? &d->scene : NULL, d->params};
     for (int j = 0; j < 9; j++)
-        a.in[j] = d->in[j];
+        a.in[j] = b->in[j];
     for (int j = 0; j < 3; j++)
-        a.out[j] = d->out[j];
+        a.out[j] = b->out[j];
     return a;
+}
+
+static sc_batch_args data_args(bench_data *d) { return arrays_args(d, &d->timed); }
+
+/* A value uniform in [lo, hi] */
+static float uniform_in(uint64_t *rng, double lo, double hi)
+{
+    double u = (double)(sc_accuracy_random(rng) >> 11) * 0x1p-53;
+    return (float)fmin(lo + (hi - lo) * u, hi);
+}
+
+/* n elements of e's inputs: the test distribution, or (uniform) uniform in value over e's
+ * range where e has no generator of its own */
+static int arrays_make(bench_arrays *b, const sc_batch_entry *e, size_t n, int uniform)
+{
+    b->n = n;
+    for (int j = 0; j < e->n_in; j++)
+        if (!(b->in[j] = malloc(n * sizeof(float))))
+            return -1;
+    for (int j = 0; j < e->n_out; j++)
+        if (!(b->out[j] = calloc(n, sizeof(float))))
+            return -1;
+    uint64_t rng = 0x9E3779B97F4A7C15ULL;
+    for (size_t i = 0; i < n; i++) {
+        float v[9];
+        if (uniform && !e->gen)
+            for (int j = 0; j < e->n_in; j++)
+                v[j] = uniform_in(&rng, e->lo[j], e->hi[j]);
+        else
+            sc_batch_sample(e, &rng, v);
+        for (int j = 0; j < e->n_in; j++)
+            b->in[j][i] = v[j];
+    }
+    return 0;
 }
 
 /* Inputs from the domain of `domain_of` (the kernel's narrowest tier: valid for all tiers). */
@@ -86,29 +137,18 @@ static int data_make(bench_data *d, const sc_batch_entry *domain_of, size_t n, c
 {
     memset(d, 0, sizeof *d);
     d->n = n;
-    d->checked = n < ACCURACY_SAMPLE ? n : ACCURACY_SAMPLE;
     d->params = domain_of->params;
     if (bs) {
         sc_batch_scene_example(bs->brdf, bs->n_dir, bs->n_point, bs->n_spot, &d->scene);
         d->has_scene = 1;
     }
-    for (int j = 0; j < domain_of->n_in; j++)
-        if (!(d->in[j] = malloc(n * sizeof(float))))
-            return -1;
-    for (int j = 0; j < domain_of->n_out; j++)
-        if (!(d->out[j] = calloc(n, sizeof(float))))
-            return -1;
-    if (!(d->ref = malloc(d->checked * 4 * sizeof(double))))
+    size_t checked = n < ACCURACY_SAMPLE ? n : ACCURACY_SAMPLE;
+    if (arrays_make(&d->timed, domain_of, n, 1) != 0 ||
+        arrays_make(&d->checked, domain_of, checked, 0) != 0 ||
+        !(d->ref = malloc(checked * 4 * sizeof(double))))
         return -1;
-    uint64_t rng = 0x9E3779B97F4A7C15ULL;
-    for (size_t i = 0; i < n; i++) {
-        float v[9];
-        sc_batch_sample(domain_of, &rng, v);
-        for (int j = 0; j < domain_of->n_in; j++)
-            d->in[j][i] = v[j];
-    }
-    sc_batch_args a = data_args(d);
-    for (size_t i = 0; i < d->checked; i++)
+    sc_batch_args a = arrays_args(d, &d->checked);
+    for (size_t i = 0; i < checked; i++)
         domain_of->ref(&a, i, d->ref + 4 * i);
     return 0;
 }
@@ -121,34 +161,72 @@ static int compare_doubles(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* ns per element: median, min, max of `repeat` samples, each of enough calls to last 0.2 ms */
-static void time_fn(sc_batch_fn fn, const sc_batch_args *a, int repeat, bench_row *r)
+/* The median of the sorted v[0..n) */
+static double median_sorted(const double *v, int n)
 {
-    double t0 = bench_now_ns();
-    fn(a); /* warm-up, and the calibration of calls per sample */
-    double once = bench_now_ns() - t0;
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Median, min, max, MAD and robust CV of n samples (sorted in place). */
+static void dispersion(double *samples, int n, bench_row *r)
+{
+    double dev[64];
+    qsort(samples, (size_t)n, sizeof samples[0], compare_doubles);
+    r->ns_per_elem = median_sorted(samples, n);
+    r->ns_min = samples[0];
+    r->ns_max = samples[n - 1];
+    for (int k = 0; k < n; k++)
+        dev[k] = fabs(samples[k] - r->ns_per_elem);
+    qsort(dev, (size_t)n, sizeof dev[0], compare_doubles);
+    r->ns_mad = median_sorted(dev, n);
+    r->cv = r->ns_per_elem > 0 ? 1.4826 * r->ns_mad / r->ns_per_elem : 0.0;
+    r->noisy = r->cv > BENCH_NOISY_CV || r->ns_max > 2.0 * r->ns_per_elem;
+}
+
+/* ns per element of `repeat` samples, each of enough calls to last 0.2 ms, after `warmup`
+ * untimed calls (the last of which calibrates the calls per sample) */
+static void time_fn(sc_batch_fn fn, const sc_batch_args *a, const bench_options *o, bench_row *r)
+{
+    double once = 0;
+    for (int w = 0; w < (o->warmup > 1 ? o->warmup : 1); w++) {
+        double t0 = bench_now_ns();
+        fn(a);
+        once = bench_now_ns() - t0;
+    }
     int calls = once > 0 && once < MIN_SAMPLE_NS ? (int)(MIN_SAMPLE_NS / once) + 1 : 1;
     double samples[64];
-    if (repeat > 64)
-        repeat = 64;
+    int repeat = o->repeat > 64 ? 64 : o->repeat;
     for (int k = 0; k < repeat; k++) {
-        t0 = bench_now_ns();
+        double t0 = bench_now_ns();
         for (int c = 0; c < calls; c++)
             fn(a);
         samples[k] = (bench_now_ns() - t0) / ((double)calls * (double)a->n);
     }
-    qsort(samples, (size_t)repeat, sizeof samples[0], compare_doubles);
-    r->ns_per_elem = samples[repeat / 2];
-    r->ns_min = samples[0];
-    r->ns_max = samples[repeat - 1];
+    dispersion(samples, repeat, r);
 }
 
-static void accuracy(const sc_batch_entry *e, bench_data *d, bench_row *r)
+/* Whether got is the reference rounded to float; only normal results count (NaN for NaN). */
+static int rounded_ok(float got, double ref)
 {
-    sc_batch_args a = data_args(d);
+    float want = (float)ref;
+    if (isnan(ref) || !(fabsf(want) >= FLT_MIN))
+        return 1;
+    return got == want;
+}
+
+/* The accuracy of fn (a row of kernel e, or a peer of it) on the checked inputs */
+static void accuracy(sc_batch_fn fn, const sc_batch_entry *e, bench_data *d, bench_row *r)
+{
+    sc_batch_args a = arrays_args(d, &d->checked);
+    fn(&a);
     sc_batch_error_init(&r->err);
-    for (size_t i = 0; i < d->checked; i++)
-        sc_batch_error_against(e, &a, i, d->ref + 4 * i, &r->err);
+    r->not_rounded = 0;
+    for (size_t i = 0; i < a.n; i++) {
+        const double *ref = d->ref + 4 * i;
+        sc_batch_error_against(e, &a, i, ref, &r->err);
+        for (int j = 0; j < e->n_out; j++)
+            r->not_rounded += !rounded_ok(a.out[j][i], ref[j]);
+    }
 }
 
 /* ---- selection ---- */
@@ -162,7 +240,7 @@ static int contains(const char *name, const char *const *list, int n)
 }
 
 /* An empty selection selects everything. */
-static int selected(const char *name, const char *const *list, int n)
+int bench_selected(const char *name, const char *const *list, int n)
 {
     return n == 0 || contains(name, list, n);
 }
@@ -170,7 +248,7 @@ static int selected(const char *name, const char *const *list, int n)
 static int entry_selected(const bench_options *o, const sc_batch_entry *e)
 {
     return sc_isa_supported(e->isa) && (o->isa_mask == 0 || (o->isa_mask >> e->isa & 1)) &&
-           selected(e->tier, o->tiers, o->n_tiers);
+           bench_selected(e->tier, o->tiers, o->n_tiers);
 }
 
 /* The kernel's last table entry for the scalar ISA: its narrowest domain; and its first: the
@@ -251,8 +329,8 @@ static void measure_entry(bench_state *st, const sc_batch_entry *e, bench_data *
     if (!r)
         return;
     sc_batch_args a = data_args(d);
-    time_fn(e->fn, &a, st->o->repeat, r);
-    accuracy(e, d, r);
+    time_fn(e->fn, &a, st->o, r);
+    accuracy(e->fn, e, d, r);
     r->entry = e;
     roofline(st, e, d, bench_isa_width(e->isa), r);
     char what[96];
@@ -260,18 +338,35 @@ static void measure_entry(bench_state *st, const sc_batch_entry *e, bench_data *
     progress(st, what);
 }
 
-static void measure_libm(bench_state *st, const sc_batch_entry *accurate, bench_data *d,
-                         const char *scene_name)
+/* A plain loop a user would write instead (isa "libm", "gcc-fast", "clang-fast"; tier "loop") */
+static void measure_loop(bench_state *st, const sc_batch_entry *accurate, bench_data *d,
+                         const char *scene_name, const char *isa, sc_batch_fn loop)
 {
-    sc_batch_fn loop = bench_libm_loop(accurate->kernel);
-    bench_row *r = loop ? add_row(st, accurate->kernel, "libm", "loop", scene_name, d->n) : NULL;
+    bench_row *r = loop ? add_row(st, accurate->kernel, isa, "loop", scene_name, d->n) : NULL;
     if (!r)
         return;
     sc_batch_args a = data_args(d);
-    time_fn(loop, &a, st->o->repeat, r);
-    accuracy(accurate, d, r);
-    r->roofline_ns = r->roofline_fraction = NAN; /* its operation count is libm's, not ours */
-    progress(st, "libm loop");
+    time_fn(loop, &a, st->o, r);
+    accuracy(loop, accurate, d, r);
+    r->roofline_ns = r->roofline_fraction = NAN; /* its operation count is the compiler's */
+    progress(st, isa);
+}
+
+/* The plain loops of a kernel: -O2 (the libm baseline), then -O3 -march=native -ffast-math by
+ * gcc and by clang when the build had them. */
+static const struct {
+    const char *isa;
+    sc_batch_fn (*lookup)(const char *kernel);
+} plain_loops[] = {
+    {"libm", bench_libm_loop}, {"gcc-fast", bench_fast_gcc_loop}, {"clang-fast", bench_fast_clang_loop}};
+enum { N_PLAIN = (int)(sizeof plain_loops / sizeof plain_loops[0]) };
+
+static int plain_loop_count(const char *kernel)
+{
+    int n = 0;
+    for (int i = 0; i < N_PLAIN; i++)
+        n += plain_loops[i].lookup(kernel) != NULL;
+    return n;
 }
 
 /* SLEEF's AVX2 functions for the kernel, when the binary has them: comparison rows. */
@@ -284,8 +379,8 @@ static void measure_sleef(bench_state *st, const sc_batch_entry *accurate, bench
         if (!r)
             return;
         sc_batch_args a = data_args(d);
-        time_fn(loops[i].fn, &a, st->o->repeat, r);
-        accuracy(accurate, d, r);
+        time_fn(loops[i].fn, &a, st->o, r);
+        accuracy(loops[i].fn, accurate, d, r);
         r->roofline_ns = r->roofline_fraction = NAN; /* its operation count is SLEEF's */
         progress(st, "sleef");
     }
@@ -307,17 +402,27 @@ static void speedups(bench_row *rows, int first, int end, const char *accurate_t
     }
 }
 
-/* Pareto set of rows [first, end): not beaten in both max ULP and time by another row. */
+/* a no slower and no less accurate (max ULP) than b */
+static int no_worse(const bench_row *a, const bench_row *b)
+{
+    return a->err.max_ulp <= b->err.max_ulp && a->ns_per_elem <= b->ns_per_elem;
+}
+
+/* Pareto set of rows [first, end), peers included: not beaten in both max ULP and time by
+ * another row; and for each tier, the first peer row that dominates it. */
 static void pareto(bench_row *rows, int first, int end)
 {
     for (int i = first; i < end; i++) {
-        rows[i].pareto = 1;
-        for (int j = first; j < end && rows[i].pareto; j++) {
-            const bench_row *a = &rows[j], *b = &rows[i];
-            int no_worse = a->err.max_ulp <= b->err.max_ulp && a->ns_per_elem <= b->ns_per_elem;
+        bench_row *b = &rows[i];
+        b->pareto = 1;
+        b->dominated_by = NULL;
+        for (int j = first; j < end; j++) {
+            const bench_row *a = &rows[j];
             int better = a->err.max_ulp < b->err.max_ulp || a->ns_per_elem < b->ns_per_elem;
-            if (j != i && no_worse && better)
-                rows[i].pareto = 0;
+            if (j != i && no_worse(a, b) && better)
+                b->pareto = 0;
+            if (b->entry && !a->entry && no_worse(a, b) && !b->dominated_by)
+                b->dominated_by = a;
         }
     }
 }
@@ -335,7 +440,9 @@ static int measure_group(bench_state *st, const char *kernel, const bench_scene 
     for (int i = 0; i < sc_batch_count; i++)
         if (measured(st->o, &sc_batch_table[i], kernel))
             measure_entry(st, &sc_batch_table[i], &d, scene_name);
-    measure_libm(st, accurate, &d, scene_name);
+    for (int i = 0; i < N_PLAIN; i++)
+        measure_loop(st, accurate, &d, scene_name, plain_loops[i].isa,
+                     plain_loops[i].lookup(accurate->kernel));
     measure_sleef(st, accurate, &d);
     speedups(st->rows, first, st->n_rows, accurate->tier);
     pareto(st->rows, first, st->n_rows);
@@ -351,7 +458,7 @@ static int kernel_list(const bench_options *o, const char **out)
     int n = 0;
     for (int i = 0; i < sc_batch_count; i++) {
         const char *k = sc_batch_table[i].kernel;
-        if (sc_batch_table[i].isa == SC_ISA_SCALAR && selected(k, o->kernels, o->n_kernels) &&
+        if (sc_batch_table[i].isa == SC_ISA_SCALAR && bench_selected(k, o->kernels, o->n_kernels) &&
             !contains(k, out, n))
             out[n++] = k;
     }
@@ -363,7 +470,7 @@ static int count_rows(const bench_options *o, const char *const *kernels, int n_
     int total = 0;
     for (int k = 0; k < n_kernels; k++) {
         const bench_sleef *sleef;
-        int per = 1 + sleef_loops_for(kernels[k], &sleef); /* the libm loop, SLEEF's */
+        int per = plain_loop_count(kernels[k]) + sleef_loops_for(kernels[k], &sleef);
         for (int i = 0; i < sc_batch_count; i++)
             per += measured(o, &sc_batch_table[i], kernels[k]);
         total += per * (strcmp(kernels[k], "shade") == 0 ? N_SCENES : 1);

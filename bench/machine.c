@@ -85,8 +85,26 @@ static double scalar_throughput(void)
     return best;
 }
 
+/* The load averages of /proc/loadavg; -1 where unknown */
+static void load_average(double load[3])
+{
+    load[0] = load[1] = load[2] = -1.0;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (!f)
+        return;
+    if (fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3)
+        load[0] = load[1] = load[2] = -1.0;
+    fclose(f);
+}
+
 void bench_machine_measure(bench_machine *m)
 {
+    time_t now = time(NULL);
+    struct tm utc;
+    if (now == (time_t)-1 || !gmtime_r(&now, &utc) ||
+        strftime(m->date, sizeof m->date, "%Y-%m-%dT%H:%M:%SZ", &utc) == 0)
+        snprintf(m->date, sizeof m->date, "unknown");
+    load_average(m->load);
     cpu_name(m->cpu, sizeof m->cpu);
     m->bandwidth = stream_bandwidth();
     double avx2 = bench_peak_avx2();

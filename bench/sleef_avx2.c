@@ -1,6 +1,7 @@
-/* SLEEF's AVX2 functions as batch loops: comparison rows of `shadecalc bench` (isa "sleef-avx2",
- * tiers u10/u35 as SLEEF names them). Built with SLEEF only when the Makefile finds it
- * (libsleef-dev, optional); otherwise bench_sleef_loop finds nothing and bench says so. */
+/* SLEEF's AVX2 functions in loops over the arrays, as a user of SLEEF writes them: comparison
+ * rows of `shadecalc bench` (isa "sleef-avx2", tiers u10/u35 as SLEEF names them). Built with
+ * SLEEF only when the Makefile finds it (libsleef-dev, optional); otherwise bench_sleef_loops
+ * finds nothing and the report's header says so. */
 #include <string.h>
 
 #include "bench/bench.h"
@@ -9,65 +10,70 @@
 #include <immintrin.h>
 #include <sleef.h>
 
-typedef __m256 (*sleef1)(__m256);
-typedef __m256 (*sleef2)(__m256, __m256);
+/* 8 lanes at a time, calling SLEEF's function directly in the loop (no pointer, no wrapper);
+ * the tail through a buffer padded with 1. `expr` computes the vector r from x (and y). */
+#define SLEEF_LOOP(name, expr)                                                                    \
+    static void name(const sc_batch_args *a)                                                      \
+    {                                                                                             \
+        const float *in0 = a->in[0], *in1 = a->in[1] ? a->in[1] : a->in[0];                      \
+        float *out = a->out[0];                                                                   \
+        size_t i = 0, n = a->n;                                                                   \
+        for (; i + 8 <= n; i += 8) {                                                              \
+            __m256 x = _mm256_loadu_ps(in0 + i), y = _mm256_loadu_ps(in1 + i);                   \
+            (void)y;                                                                              \
+            _mm256_storeu_ps(out + i, expr);                                                      \
+        }                                                                                         \
+        if (i == n)                                                                               \
+            return;                                                                               \
+        float bx[8], by[8], br[8];                                                                \
+        pad_tail(in0 + i, bx, n - i);                                                             \
+        pad_tail(in1 + i, by, n - i);                                                             \
+        __m256 x = _mm256_loadu_ps(bx), y = _mm256_loadu_ps(by);                                  \
+        (void)y;                                                                                  \
+        _mm256_storeu_ps(br, expr);                                                               \
+        memcpy(out + i, br, (n - i) * sizeof(float));                                             \
+    }
 
-/* 8 lanes at a time; the tail through a buffer padded with 1 */
-static void run_sleef(const sc_batch_args *a, sleef1 f1, sleef2 f2)
+/* the first count < 8 elements of p, padded with 1 */
+static void pad_tail(const float *p, float *b, size_t count)
 {
-    size_t i = 0;
-    for (; i + 8 <= a->n; i += 8) {
-        __m256 x = _mm256_loadu_ps(a->in[0] + i);
-        _mm256_storeu_ps(a->out[0] + i, f1 ? f1(x) : f2(x, _mm256_loadu_ps(a->in[1] + i)));
-    }
-    if (i == a->n)
-        return;
-    float x[8], y[8], r[8];
-    for (size_t k = 0; k < 8; k++) {
-        x[k] = i + k < a->n ? a->in[0][i + k] : 1.0f;
-        y[k] = f2 && i + k < a->n ? a->in[1][i + k] : 1.0f;
-    }
-    _mm256_storeu_ps(r, f1 ? f1(_mm256_loadu_ps(x)) : f2(_mm256_loadu_ps(x), _mm256_loadu_ps(y)));
-    for (size_t k = 0; i + k < a->n; k++)
-        a->out[0][i + k] = r[k];
+    for (size_t k = 0; k < 8; k++)
+        b[k] = k < count ? p[k] : 1.0f;
 }
 
-/* wrappers: SLEEF declares its functions as returning const __m256, a type clang will not
- * convert to sleef1/sleef2 */
-#define LOOP1(name, fn)                                                                           \
-    static __m256 lane_##name(__m256 x) { return fn(x); }                                        \
-    static void name(const sc_batch_args *a) { run_sleef(a, lane_##name, NULL); }
-#define LOOP2(name, fn)                                                                           \
-    static __m256 lane_##name(__m256 x, __m256 y) { return fn(x, y); }                           \
-    static void name(const sc_batch_args *a) { run_sleef(a, NULL, lane_##name); }
-LOOP2(pow_u10, Sleef_powf8_u10avx2)
-LOOP1(exp_u10, Sleef_expf8_u10avx2)
-LOOP1(exp2_u10, Sleef_exp2f8_u10avx2)
-LOOP1(exp2_u35, Sleef_exp2f8_u35avx2)
-LOOP1(log_u10, Sleef_logf8_u10avx2)
-LOOP1(log_u35, Sleef_logf8_u35avx2)
-LOOP1(log2_u10, Sleef_log2f8_u10avx2)
-LOOP1(log2_u35, Sleef_log2f8_u35avx2)
-LOOP1(sin_u10, Sleef_sinf8_u10avx2)
-LOOP1(sin_u35, Sleef_sinf8_u35avx2)
-LOOP1(cos_u10, Sleef_cosf8_u10avx2)
-LOOP1(cos_u35, Sleef_cosf8_u35avx2)
-LOOP1(acos_u10, Sleef_acosf8_u10avx2)
-LOOP1(acos_u35, Sleef_acosf8_u35avx2)
-LOOP2(atan2_u10, Sleef_atan2f8_u10avx2)
-LOOP2(atan2_u35, Sleef_atan2f8_u35avx2)
-LOOP1(sqrt_u05, Sleef_sqrtf8_u05avx2)
+/* kernel, SLEEF's tier, the vector expression */
+#define SLEEF_FUNCTIONS(X)                                                                        \
+    X(pow, u10, Sleef_powf8_u10avx2(x, y))                                                        \
+    X(exp, u10, Sleef_expf8_u10avx2(x))                                                           \
+    X(exp2, u10, Sleef_exp2f8_u10avx2(x)) X(exp2, u35, Sleef_exp2f8_u35avx2(x))                   \
+    X(log, u10, Sleef_logf8_u10avx2(x)) X(log, u35, Sleef_logf8_u35avx2(x))                       \
+    X(log2, u10, Sleef_log2f8_u10avx2(x)) X(log2, u35, Sleef_log2f8_u35avx2(x))                   \
+    X(sin, u10, Sleef_sinf8_u10avx2(x)) X(sin, u35, Sleef_sinf8_u35avx2(x))                       \
+    X(cos, u10, Sleef_cosf8_u10avx2(x)) X(cos, u35, Sleef_cosf8_u35avx2(x))                       \
+    X(acos, u10, Sleef_acosf8_u10avx2(x)) X(acos, u35, Sleef_acosf8_u35avx2(x))                   \
+    X(atan2, u10, Sleef_atan2f8_u10avx2(x, y)) X(atan2, u35, Sleef_atan2f8_u35avx2(x, y))         \
+    X(sqrt, u05, Sleef_sqrtf8_u05avx2(x))
 
-static const bench_sleef sleef_loops[] = {
-    {"pow", "u10", pow_u10},     {"exp", "u10", exp_u10},     {"exp2", "u10", exp2_u10},
-    {"exp2", "u35", exp2_u35},   {"log", "u10", log_u10},     {"log", "u35", log_u35},
-    {"log2", "u10", log2_u10},   {"log2", "u35", log2_u35},   {"sin", "u10", sin_u10},
-    {"sin", "u35", sin_u35},     {"cos", "u10", cos_u10},     {"cos", "u35", cos_u35},
-    {"acos", "u10", acos_u10},   {"acos", "u35", acos_u35},   {"atan2", "u10", atan2_u10},
-    {"atan2", "u35", atan2_u35}, {"sqrt", "u05", sqrt_u05},
-};
+#define SLEEF_DEFINE(kernel, tier, expr) SLEEF_LOOP(kernel##_##tier, expr)
+SLEEF_FUNCTIONS(SLEEF_DEFINE)
+
+#define SLEEF_ROW(kernel, tier, expr) {#kernel, #tier, kernel##_##tier},
+static const bench_sleef sleef_loops[] = {SLEEF_FUNCTIONS(SLEEF_ROW)};
 
 int bench_sleef_available(void) { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
+
+const char *bench_sleef_absence(void)
+{
+    return bench_sleef_available() ? "" : "this CPU lacks AVX2 or FMA: no sleef-avx2 rows";
+}
+
+#define SLEEF_STR2(x) #x
+#define SLEEF_STR(x) SLEEF_STR2(x)
+const char *bench_sleef_version(void)
+{
+    return SLEEF_STR(SLEEF_VERSION_MAJOR) "." SLEEF_STR(SLEEF_VERSION_MINOR) "." SLEEF_STR(
+        SLEEF_VERSION_PATCHLEVEL);
+}
 
 int bench_sleef_loops(const char *kernel, const bench_sleef **out)
 {
@@ -82,6 +88,13 @@ int bench_sleef_loops(const char *kernel, const bench_sleef **out)
 }
 #else
 int bench_sleef_available(void) { return 0; }
+
+const char *bench_sleef_absence(void)
+{
+    return "SLEEF not found at build time: no sleef-avx2 rows (install libsleef-dev and rebuild)";
+}
+
+const char *bench_sleef_version(void) { return ""; }
 
 int bench_sleef_loops(const char *kernel, const bench_sleef **out)
 {

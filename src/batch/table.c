@@ -28,7 +28,6 @@
 #define ROWS_P(...) ROWS_WITH(ENTRY_P, __VA_ARGS__)
 
 #define B22 0x1p-22
-#define B21 0x1p-21
 #define B12 0x1p-12
 #define B11 0x1p-11
 #define B8 0x1p-8
@@ -45,6 +44,7 @@ const sc_batch_entry sc_batch_table[] = {
     ROWS(exp2, bits12, 1, 1, 0, B12, 0, "-125 <= x < 128", -125, 127.99, 0, 0, NULL, 19)
     ROWS(exp2, bits8, 1, 1, 0, B8, 0, "-125 <= x < 128", -125, 127.99, 0, 0, NULL, 18)
     ROWS(exp, u1, 1, 1, 1, 0, 0, "all x", -104, 89, 0, 0, NULL, 29)
+    ROWS(exp, u4, 1, 1, 4, 0, 0, "-86 <= x <= 88", -86, 88, 0, 0, NULL, 18)
     ROWS(exp, bits12, 1, 1, 0, B12, 0, "-86 <= x <= 88", -86, 88, 0, 0, NULL, 20)
     ROWS(exp, bits8, 1, 1, 0, B8, 0, "-86 <= x <= 88", -86, 88, 0, 0, NULL, 19)
     ROWS(log2, u1, 1, 1, 1, 0, 0, "x > 0", 0, FLT_MAX, 0, 0, NULL, 35)
@@ -64,12 +64,9 @@ const sc_batch_entry sc_batch_table[] = {
     ROWS(sqrt, u1, 1, 1, 0.5, 0, 0, "x >= 0", 0, FLT_MAX, 0, 0, NULL, 1)
     ROWS(dot, bits22, 6, 1, 0, 0, B22, "|a|, |b| in [2^-8, 2^8]; error <= 2^-22 sum|a_k b_k|", VEC(sc_batch_gen_pair), 4)
     ROWS(reflect, bits22, 6, 3, 0, 0, B22, "|I| in [2^-8, 2^8], N unit; error <= 2^-22 (|I| + 2|N||N.I|)", VEC(sc_batch_gen_reflect), 8)
-    ROWS(normalize, u3, 3, 3, 3, 0, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 17)
-    ROWS(normalize, bits21, 3, 3, 0, B21, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 22)
+    ROWS(normalize, u3, 3, 3, 3, 0, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 14)
     ROWS(normalize, bits11, 3, 3, 0, B11, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 17)
     ROWS(length, u2, 3, 1, 2, 0, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 5)
-    ROWS(length, bits21, 3, 1, 0, B21, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 14)
-    ROWS(length, bits11, 3, 1, 0, B11, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 9)
     ROWS(shade, accurate, 9, 3, 0, 0x1p-15, 0x1p-20, "n, v nonzero, |n.v| >= 2^-6 |n||v|, blinn-phong m <= 128, cos of the spot angle not within 2^-16 of a hard cone edge; error relative, plus 2^-20 x scale", VEC(sc_batch_gen_shade), 40)
     ROWS(shade, bits12, 9, 3, 0, B12, B12, "as accurate", VEC(sc_batch_gen_shade), 40)
     ROWS(shade, bits8, 9, 3, 0, B8, B8, "as accurate", VEC(sc_batch_gen_shade), 40)

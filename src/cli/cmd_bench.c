@@ -6,6 +6,7 @@
 
 #include "bench/bench.h"
 #include "cli/cli.h"
+#include "shadecalc/file.h"
 
 static void usage(FILE *out)
 {
@@ -24,7 +25,10 @@ static void usage(FILE *out)
             "  -t, --tier LIST     tiers, e.g. u1,bits12 (default: all)\n"
             "  -n, --n LIST        element counts (default 4096,8388608: in cache, streaming)\n"
             "  -r, --repeat K      timed repeats per row, 1..64 (default 5)\n"
-            "  -f, --format F      table|csv|json (default table)\n"
+            "  -w, --warmup K      untimed calls before the repeats, 1..1000 (default 1)\n"
+            "  -f, --format F      table|csv|json|markdown (default table; with -o, from the\n"
+            "                      file's extension .csv, .json, .md when not given)\n"
+            "  -o, --output FILE   the report into FILE (written whole or not at all)\n"
             "  -h, --help          this help\n"
             "The scalar accurate kernel and the libm loop are always measured (the baselines).\n");
 }
@@ -32,6 +36,8 @@ static void usage(FILE *out)
 typedef struct {
     bench_options run;
     int format, list;
+    int format_given;
+    const char *output;
 } options;
 
 /* Splits a comma list in place into out[]; returns the count, or -1 if more than max. */
@@ -114,14 +120,43 @@ static int parse_sizes(char *s, options *o)
 
 static int parse_format(const char *s, options *o)
 {
-    static const char *const names[] = {"table", "csv", "json"};
-    for (int i = 0; i < 3; i++)
+    static const char *const names[] = {"table", "csv", "json", "markdown"};
+    for (int i = 0; i < 4; i++)
         if (strcmp(s, names[i]) == 0) {
             o->format = i;
+            o->format_given = 1;
             return SC_EXIT_OK;
         }
-    sc_error("bench: unknown format '%s' (table, csv, json)", s);
+    sc_error("bench: unknown format '%s' (table, csv, json, markdown)", s);
     return SC_EXIT_USAGE;
+}
+
+/* The format a file's extension names (.csv, .json, .md), or the table */
+static int format_of_path(const char *path)
+{
+    static const struct {
+        const char *ext;
+        int format;
+    } exts[] = {{".csv", BENCH_CSV}, {".json", BENCH_JSON}, {".md", BENCH_MARKDOWN}};
+    size_t len = strlen(path);
+    for (size_t i = 0; i < sizeof exts / sizeof exts[0]; i++) {
+        size_t el = strlen(exts[i].ext);
+        if (len > el && strcmp(path + len - el, exts[i].ext) == 0)
+            return exts[i].format;
+    }
+    return BENCH_TABLE;
+}
+
+/* An integer option in [lo, hi] */
+static int parse_count(const char *name, const char *arg, long lo, long hi, int *out)
+{
+    long v;
+    if (sc_parse_long(arg, &v) != 0 || v < lo || v > hi) {
+        sc_error("bench: --%s %s: expected an integer %ld..%ld", name, arg, lo, hi);
+        return SC_EXIT_USAGE;
+    }
+    *out = (int)v;
+    return SC_EXIT_OK;
 }
 
 static int known_kernel(const char *kernel)
@@ -154,44 +189,57 @@ static int parse_options(int argc, char **argv, options *o)
         {"list", no_argument, NULL, 'l'},       {"isa", required_argument, NULL, 'i'},
         {"tier", required_argument, NULL, 't'}, {"n", required_argument, NULL, 'n'},
         {"repeat", required_argument, NULL, 'r'}, {"format", required_argument, NULL, 'f'},
+        {"warmup", required_argument, NULL, 'w'}, {"output", required_argument, NULL, 'o'},
         {"help", no_argument, NULL, 'h'},       {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
-    long repeat;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "li:t:n:r:f:h", longs)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "li:t:n:r:f:w:o:h", longs)) != -1) {
         switch (c) {
         case 'l': o->list = 1; break;
         case 'i': status = parse_isas(optarg, o); break;
         case 't': status = parse_tiers(optarg, o); break;
         case 'n': status = parse_sizes(optarg, o); break;
-        case 'r':
-            if (sc_parse_long(optarg, &repeat) != 0 || repeat < 1 || repeat > 64) {
-                sc_error("bench: --repeat %s: expected an integer 1..64", optarg);
-                status = SC_EXIT_USAGE;
-            }
-            o->run.repeat = (int)repeat;
-            break;
+        case 'r': status = parse_count("repeat", optarg, 1, 64, &o->run.repeat); break;
+        case 'w': status = parse_count("warmup", optarg, 1, 1000, &o->run.warmup); break;
+        case 'o': o->output = optarg; break;
         case 'f': status = parse_format(optarg, o); break;
         case 'h': usage(stdout); return -1;
         default: return sc_usage_error("bench", argv, optopt);
         }
     }
+    if (status == SC_EXIT_OK && o->output && !o->format_given)
+        o->format = format_of_path(o->output);
     return status == SC_EXIT_OK ? parse_kernels(argc, argv, o) : status;
+}
+
+/* The report to standard output, or whole into the -o file */
+static int write_report(const options *o, const bench_machine *m, const bench_row *rows, int n)
+{
+    if (!o->output) {
+        bench_report(stdout, o->format, m, rows, n);
+        return SC_EXIT_OK;
+    }
+    char err[512];
+    sc_atomic_file *f = sc_atomic_open(o->output, err, sizeof err);
+    if (f) {
+        bench_report(sc_atomic_stream(f), o->format, m, rows, n);
+        if (sc_atomic_commit(f, err, sizeof err) == 0)
+            return SC_EXIT_OK;
+    }
+    sc_error("bench: %s", err);
+    return SC_EXIT_RUNTIME;
 }
 
 static int run(int argc, char **argv)
 {
-    options o = {{{0}, 0, 0, {0}, 0, {4096, 8388608}, 2, 5}, 0, 0};
+    options o = {{{0}, 0, 0, {0}, 0, {4096, 8388608}, 2, 5, 1}, 0, 0, 0, NULL};
     int status = parse_options(argc, argv, &o);
     if (status != SC_EXIT_OK)
         return status < 0 ? SC_EXIT_OK : status;
     if (o.list) {
-        bench_list(stdout, o.format);
+        bench_list(stdout, o.format, o.run.kernels, o.run.n_kernels);
         return SC_EXIT_OK;
     }
-    if (!bench_sleef_available())
-        fprintf(stderr, "bench: SLEEF not found at build time (or no AVX2 here): no sleef-avx2 "
-                        "comparison rows (install libsleef-dev and rebuild to get them)\n");
     bench_machine m;
     bench_machine_measure(&m);
     bench_row *rows;
@@ -200,9 +248,9 @@ static int run(int argc, char **argv)
         sc_error("bench: out of memory");
         return SC_EXIT_RUNTIME;
     }
-    bench_report(stdout, o.format, &m, rows, n);
+    status = write_report(&o, &m, rows, n);
     free(rows);
-    return SC_EXIT_OK;
+    return status;
 }
 
 const sc_command sc_cmd_bench = {"bench", "speed against accuracy of the batch kernels", run};

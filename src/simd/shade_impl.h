@@ -11,7 +11,7 @@
  * with no branch on the tier.
  */
 
-enum { ACCURATE, FAST12, FAST8 };
+enum { ACCURATE, FAST12, FAST8, REFINED }; /* REFINED: rsqrt_refined (normalize u3) */
 enum { MAX_IN = 9, MAX_OUT = 3 };
 
 /* ---- driver: k input arrays, m output arrays ---- */
@@ -23,9 +23,15 @@ typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i,
 
 static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 {
-    size_t i = 0;
-    for (; i + VW <= a->n; i += VW)
-        f(a->in, a->out, i, a->scene, a->params);
+    /* local copies of the pointers and n: the compiler keeps them in registers, where through
+     * `a` it reloaded them after every store (the stores might have changed them) */
+    const float *ins[MAX_IN];
+    float *outs[MAX_OUT];
+    memcpy(ins, a->in, sizeof ins);
+    memcpy(outs, a->out, sizeof outs);
+    size_t i = 0, n = a->n;
+    for (; i + VW <= n; i += VW)
+        f(ins, outs, i, a->scene, a->params);
     if (i == a->n)
         return;
     float tail_in[MAX_IN][VW], tail_out[MAX_OUT][VW]; /* the tail, padded with 1 */
@@ -58,6 +64,8 @@ static SC_INLINE vf tier_rsqrt(int tier, vf x)
 {
     if (tier == ACCURATE)
         return vf_div(vf_set1(1.0f), vf_sqrt(x));
+    if (tier == REFINED)
+        return rsqrt_refined(x);
     return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
 }
 
@@ -189,16 +197,13 @@ static SC_INLINE void reflect_lane(const float *const *in, float *const *out, si
     v3_store((v3){vf_fma(k, n.x, i.x), vf_fma(k, n.y, i.y), vf_fma(k, n.z, i.z)}, out, e);
 }
 
-static SC_INLINE void length_tier(int tier, const float *const *in, float *const *out, size_t i)
+/* |a|: one square root, rounded once (the rsqrt tiers were slower and less accurate) */
+static SC_INLINE void length_lane(const float *const *in, float *const *out, size_t i,
+                                  const sc_batch_scene *s, const void *p)
 {
+    (void)s, (void)p;
     v3 a = v3_load(in, 0, i);
-    vf dd = v3_dot(a, a);
-    if (tier == ACCURATE) {
-        vf_storeu(out[0] + i, vf_sqrt(dd));
-        return;
-    }
-    vf est = vf_mul(dd, tier_rsqrt(tier, vf_max(dd, vf_set1(FLT_MIN))));
-    vf_storeu(out[0] + i, vf_select(vf_eq(dd, vf_set1(INFINITY)), dd, est)); /* not ∞ · 0 */
+    vf_storeu(out[0] + i, vf_sqrt(v3_dot(a, a)));
 }
 
 #define TIERED_LANE(name, body_fn, tier)                                                          \
@@ -214,20 +219,13 @@ static SC_INLINE void normalize_tier(int tier, const float *const *in, float *co
     v3_store(v3_normalize(tier, v3_load(in, 0, i)), out, i);
 }
 
-TIERED_LANE(normalize_acc, normalize_tier, ACCURATE)
-TIERED_LANE(normalize_f12, normalize_tier, FAST12)
+TIERED_LANE(normalize_refined, normalize_tier, REFINED)
 TIERED_LANE(normalize_f8, normalize_tier, FAST8)
-TIERED_LANE(length_acc, length_tier, ACCURATE)
-TIERED_LANE(length_f12, length_tier, FAST12)
-TIERED_LANE(length_f8, length_tier, FAST8)
 BATCH_N(dot_bits22, 6, 1, dot_lane)
 BATCH_N(reflect_bits22, 6, 3, reflect_lane)
-BATCH_N(normalize_u3, 3, 3, normalize_acc)
-BATCH_N(normalize_bits21, 3, 3, normalize_f12)
+BATCH_N(normalize_u3, 3, 3, normalize_refined)
 BATCH_N(normalize_bits11, 3, 3, normalize_f8)
-BATCH_N(length_u2, 3, 1, length_acc)
-BATCH_N(length_bits21, 3, 1, length_f12)
-BATCH_N(length_bits11, 3, 1, length_f8)
+BATCH_N(length_u2, 3, 1, length_lane)
 
 /* ---- the shading equation (SPEC §6): L = c_amb ⊙ L_A + Σ f(l, v) ⊙ E_L cos θ_i ---- */
 

@@ -37,6 +37,7 @@ static inline vm vf_lt(vf a, vf b) { return _mm_cmplt_ps(a, b); }
 static inline vm vf_le(vf a, vf b) { return _mm_cmple_ps(a, b); }
 static inline vm vf_eq(vf a, vf b) { return _mm_cmpeq_ps(a, b); }
 static inline vm vf_isnan(vf a) { return _mm_cmpunord_ps(a, a); }
+static inline vm vf_nlt(vf a, vf b) { return _mm_cmpnlt_ps(a, b); } /* !(a < b) */
 static inline vm vm_or(vm a, vm b) { return _mm_or_ps(a, b); }
 static inline vm vm_and(vm a, vm b) { return _mm_and_ps(a, b); }
 static inline int vm_any(vm a) { return _mm_movemask_ps(a) != 0; }
