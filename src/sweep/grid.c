@@ -127,7 +127,10 @@ double sc_sweep_var_value(const sc_sweep_var *v, long i)
         return v->stop;
     if (v->spacing == SC_SPACING_LOG) { /* evenly in log10, so that decades land exactly */
         double a = log10(fabs(v->start)), b = log10(fabs(v->stop));
-        return copysign(pow(10.0, a + (b - a) * (double)i / (double)(v->count - 1)), v->start);
+        double x = pow(10.0, a + (b - a) * (double)i / (double)(v->count - 1));
+        /* the rounding of log10 and pow must not step past an end (10^log10(DBL_MAX) is inf) */
+        double lo = fmin(fabs(v->start), fabs(v->stop)), hi = fmax(fabs(v->start), fabs(v->stop));
+        return copysign(fmin(fmax(x, lo), hi), v->start);
     }
     double steps = (double)(v->count - 1), span = v->stop - v->start;
     if (isfinite(span * steps)) /* span·i then one division: 0:1:11 gives 0.3, not 0.30…04 */

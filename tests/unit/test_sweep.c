@@ -2,6 +2,7 @@
  * order, `$name` substitution, the row formats, the runner (rows in order on any number of
  * threads, failures, memory that does not grow with rows) and the EXR of a two-variable sweep
  * read back through OpenEXR. */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -68,6 +69,11 @@ static void log_spacing_is_geometric(void **state)
     sc_sweep_var neg = var("a=-8:-0.5:5"); /* ratio 1/16: -8 -4 -2 -1 -0.5 */
     assert_int_equal(sc_sweep_var_set_log(&neg, err, sizeof err), 0);
     assert_true(fabs(sc_sweep_var_value(&neg, 2) + 2.0) <= 4e-15);
+    /* 10^log10(DBL_MAX) rounds past DBL_MAX: the values stay within the ends (a fuzz finding) */
+    sc_sweep_var top = var("k=1.7976931348623157e308:1.7976931348623157e308:3");
+    assert_int_equal(sc_sweep_var_set_log(&top, err, sizeof err), 0);
+    for (int i = 0; i < 3; i++)
+        assert_true(sc_sweep_var_value(&top, i) == DBL_MAX);
 }
 
 static void log_spacing_needs_ends_of_one_sign(void **state)
