@@ -1,9 +1,11 @@
 /* shadecalc: dispatch to the subcommand named by argv[1]. */
 #include "cli/cli.h"
 
+#include <errno.h>
 #include <string.h>
 
 #include "commands.h"
+#include "shadecalc/file.h"
 #include "util/text.h"
 
 static const sc_command *const commands[] = {SC_COMMANDS NULL};
@@ -46,6 +48,9 @@ static int run_command(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    if (sc_atomic_remove_on_signals() != 0)
+        sc_warning("cannot install the signal handlers: %s (an interrupted write may leave its "
+                   "temporary)", strerror(errno));
     if (argc < 2) {
         print_help(stderr);
         return SC_EXIT_USAGE;

@@ -1,5 +1,6 @@
 /* shadecalc sweep --plot and --image: the rows gathered into an SVG plot (shadecalc/plot.h)
  * and an EXR image (shadecalc/image.h), both written atomically at the end. */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -119,11 +120,13 @@ static int write_svg(const char *path, int (*writer)(FILE *, const void *), cons
     char err[512];
     int status = SC_EXIT_RUNTIME;
     sc_atomic_file *f = sc_atomic_open(path, err, sizeof err);
+    errno = 0;
     if (f && writer(sc_atomic_stream(f), what) == 0)
         status = sc_atomic_commit(f, err, sizeof err) == 0 ? SC_EXIT_OK : SC_EXIT_RUNTIME;
     else if (f) {
+        int errnum = errno; /* of the failed write */
         sc_atomic_abort(f);
-        snprintf(err, sizeof err, "%s: write error", path);
+        snprintf(err, sizeof err, "%s: %s", path, errnum ? strerror(errnum) : "write error");
     }
     if (status != SC_EXIT_OK)
         sc_error("%s", err);
