@@ -15,6 +15,59 @@ d=$e2e_tmp/files
 mkdir "$d"
 temps() { ls -A "$1" | grep -c '\.tmp$'; } # temporaries left in directory $1
 
+# ---- §3 standard output: a failed write is exit 1 with a message, whichever command ----
+
+# Each line: one command that prints to standard output.
+commands() {
+    cat <<EOF
+--help
+--version
+help
+eval 1
+eval --help
+shade --light directional\ dir=0,0,1
+shade --help
+check --brdf lambert
+normal --surface sphere --uv 0.3,0.3
+bench --list
+render --compare --size 16x16 --output-dir $d
+render --help
+sweep --var x=0:1:3 x
+sweep --help
+EOF
+}
+
+lost_output() { # NAME WANT_MESSAGE REDIRECTION: every command with stdout sent there
+    what=$1 want=$2 where=$3
+    commands | while IFS= read -r line; do
+        # shellcheck disable=SC2086 # the line is the command's words
+        case $where in
+            full) eval "set -- $line"; "$SHADECALC" "$@" </dev/null >/dev/full 2>"$e2e_tmp/err" ;;
+            closed) eval "set -- $line"; "$SHADECALC" "$@" </dev/null >&- 2>"$e2e_tmp/err" ;;
+        esac
+        status=$?
+        err=$(cat "$e2e_tmp/err")
+        [ "$status" = 1 ] && [ "$err" = "$want" ]
+        verdict "$what: $line" $((! $?)) "status $status, stderr [$err]"
+    done
+}
+lost_output "stdout /dev/full" "error: standard output: No space left on device" full
+lost_output "stdout closed" "error: standard output: Bad file descriptor" closed
+
+"$SHADECALC" eval $(seq 1 3000) 2>"$e2e_tmp/err" | head -1 >/dev/null
+verdict "a reader that quits early (eval | head) is not reported" \
+    "$([ ! -s "$e2e_tmp/err" ] && echo 1)" "stderr [$(cat "$e2e_tmp/err")]"
+"$SHADECALC" sweep --var x=0:1:1000000 x 2>"$e2e_tmp/err" | head -1 >/dev/null
+verdict "a reader that quits early (sweep | head) is not reported" \
+    "$([ ! -s "$e2e_tmp/err" ] && echo 1)" "stderr [$(cat "$e2e_tmp/err")]"
+
+# With stdout closed the first file opened would get descriptor 1: the table must still go to
+# its file, and what goes to stdout must still fail.
+"$SHADECALC" sweep --var x=0:1:3 -o "$d/closed.csv" x >&- 2>"$e2e_tmp/err"
+verdict "stdout closed: -o FILE still gets the whole table" \
+    "$([ $? = 0 ] && [ "$(cat "$d/closed.csv")" = "$(printf 'x,value\n0,0\n0.5,0.5\n1,1')" ] &&
+        echo 1)" "$(cat "$d/closed.csv" "$e2e_tmp/err")"
+
 # ---- §4 what the writer replaces ----
 
 table=$(printf 'x,value\n0,0\n1,1') # the table of --var x=0:1:2 x
