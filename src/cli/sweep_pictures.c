@@ -56,11 +56,12 @@ static int open_plot(sweep_pictures *p)
 static int open_image(sweep_pictures *p)
 {
     char err[256];
-    if (sc_sweep_image_init(&p->image, p->grid, p->plan->n_results, err, sizeof err) < 0) {
+    int rc = sc_sweep_image_init(&p->image, p->grid, p->plan->n_results, err, sizeof err);
+    if (rc == -1) {
         sc_error("sweep: --image %s: %s", p->o.image, err);
         return SC_EXIT_USAGE;
     }
-    return SC_EXIT_OK;
+    return rc == 0 ? SC_EXIT_OK : SC_EXIT_RUNTIME; /* out of memory: reported by the caller */
 }
 
 int sweep_pictures_open(sweep_pictures **out, const sweep_picture_options *o,

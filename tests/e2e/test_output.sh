@@ -200,3 +200,23 @@ fi
 verdict "past ulimit -f: 'File too large', exit 1, no temporary" \
     "$([ $? = 1 ] && [ "$(temps "$d")" = 0 ] && grep -q 'File too large' "$e2e_tmp/err" && echo 1)" \
     "$(cat "$e2e_tmp/err"; ls -A "$d")"
+
+# ---- §8 a failed allocation is a runtime error (1), not a usage error ----
+
+limit=150000 # KiB of address space: shadecalc starts, 256 MB of pixels do not fit
+if (ulimit -v $limit && "$SHADECALC" --version >/dev/null 2>&1); then # not under ASan
+    (
+        ulimit -v $limit
+        "$SHADECALC" sweep --var x=0:1:8000 --var y=0:1:8000 --image "$d/big.exr" 'x*y'
+    ) >"$e2e_tmp/out" 2>"$e2e_tmp/err"
+    verdict "sweep --image 8000x8000 under ulimit -v: out of memory, exit 1" \
+        "$([ $? = 1 ] && grep -q 'out of memory' "$e2e_tmp/err" && echo 1)" "$(cat "$e2e_tmp/err")"
+    (
+        ulimit -v $limit
+        "$SHADECALC" render --size 16384x2048 -o "$d/big.exr"
+    ) >"$e2e_tmp/out" 2>"$e2e_tmp/err"
+    verdict "render 16384x2048 under ulimit -v: out of memory, exit 1" \
+        "$([ $? = 1 ] && grep -q 'out of memory' "$e2e_tmp/err" && echo 1)" "$(cat "$e2e_tmp/err")"
+else
+    echo "skip ulimit -v (the binary does not start under it: a sanitizer build)"
+fi
