@@ -222,11 +222,14 @@ static int is_read_only(const char *path, const struct stat *st)
     return access(path, W_OK) != 0 || (st->st_mode & 0222) == 0;
 }
 
-/* path names the file standard output is open on (/dev/stdout, /dev/fd/1, or the same file). */
+/* path names the file standard output is open on for writing (/dev/stdout, /dev/fd/1, or the
+ * same file by another name). */
 static int is_stdout(const struct stat *st)
 {
     struct stat out;
-    return fstat(STDOUT_FILENO, &out) == 0 && out.st_dev == st->st_dev && out.st_ino == st->st_ino;
+    int flags = fcntl(STDOUT_FILENO, F_GETFL);
+    return flags != -1 && (flags & O_ACCMODE) != O_RDONLY && fstat(STDOUT_FILENO, &out) == 0 &&
+           out.st_dev == st->st_dev && out.st_ino == st->st_ino;
 }
 
 /* A temporary next to the regular file (or free name) at the end of path's links. 0, or -1

@@ -68,6 +68,10 @@ verdict "stdout closed: -o FILE still gets the whole table" \
     "$([ $? = 0 ] && [ "$(cat "$d/closed.csv")" = "$(printf 'x,value\n0,0\n0.5,0.5\n1,1')" ] &&
         echo 1)" "$(cat "$d/closed.csv" "$e2e_tmp/err")"
 
+"$SHADECALC" sweep --var x=0:1:3 -o /dev/null x >&- 2>"$e2e_tmp/err"
+verdict "stdout closed: -o /dev/null is not taken for standard output" \
+    "$([ $? = 0 ] && [ ! -s "$e2e_tmp/err" ] && echo 1)" "$(cat "$e2e_tmp/err")"
+
 # ---- §4 what the writer replaces ----
 
 table=$(printf 'x,value\n0,0\n1,1') # the table of --var x=0:1:2 x
