@@ -81,11 +81,12 @@ verdict "-o /dev/null: status 0, /dev/null still a character device" \
     "$([ $? = 0 ] && [ -c /dev/null ] && echo 1)" "$(ls -l /dev/null)"
 
 if mknod "$d/full" c 1 7 2>/dev/null; then # a device of our own, never the system's /dev/full
-    for opt in -o --plot --image; do
+    for opt in -o --plot --image --heatmap; do
         case $opt in
             -o) args="--var x=0:1:2 -o $d/full x" ;;
             --plot) args="--var x=0:1:2 --plot $d/full x" ;;
             --image) args="--var x=0:1:2 --var y=0:1:2 --image $d/full x*y" ;;
+            --heatmap) args="--var x=0:1:2 --var y=0:1:2 --heatmap $d/full x*y" ;;
         esac
         # shellcheck disable=SC2086
         "$SHADECALC" sweep $args 2>"$e2e_tmp/err"
