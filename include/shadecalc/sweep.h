@@ -144,7 +144,9 @@ void sc_sweep_describe_var(const sc_sweep_var *v, char *buf, size_t size);
  * count, height = the second's, the second variable growing upward (its first value on the
  * bottom row, as a plot's y axis and BRDF Explorer's θ_h × θ_d slice with θ_d = 0 at the
  * bottom); channels
- * Y for one result, R,G for two, R,G,B for three, R,G,B,A for four. 0, or -1 with err. */
+ * Y for one result, R,G for two, R,G,B for three, R,G,B,A for four. 0; -1 with err when the
+ * grid does not fit an image (not two variables, more than SC_EXR_MAX_VALUES values); -2 with
+ * err when the allocation failed (out of memory). */
 int sc_sweep_image_init(sc_image *img, const sc_sweep_grid *g, int n_results, char *err,
                         size_t errsize);
 /* Stores the results of `row` (any order) in their pixel, rounded to float. */

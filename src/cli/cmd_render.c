@@ -12,6 +12,7 @@
 #include "cli/progress.h"
 #include "cli/setup.h"
 #include "shadecalc/batch.h"
+#include "shadecalc/file.h"
 #include "shadecalc/render.h"
 
 /* The default picture: a z-up world (the built-in surfaces' axes are z) seen from the front
@@ -77,6 +78,7 @@ static void usage(FILE *out)
             "      --compare        the Gouraud/Phong comparison (writes into --output-dir)\n"
             "      --output-dir DIR where --compare writes its images (default .)\n"
             "  -f, --format F       table|csv for --compare (default table)\n"
+            "      --force          replace read-only files among those written\n"
             "  -h, --help           this help\n"
             "\n"
             "example: shadecalc render --surface 'torus R=1 r=0.3' --shading phong -o torus.exr\n");
@@ -229,7 +231,7 @@ static int parse_compression(const char *arg, sc_exr_compression *out)
 enum {
     OPT_SURFACE = 256, OPT_MESH, OPT_SHADING, OPT_EYE, OPT_AT, OPT_UP, OPT_FOV, OPT_SIZE,
     OPT_EXR_TYPE, OPT_DEPTH, OPT_NORMALS, OPT_COMPARE, OPT_OUTPUT_DIR, OPT_ISA, OPT_TIER,
-    OPT_COMPRESSION
+    OPT_COMPRESSION, OPT_FORCE
 };
 
 typedef struct {
@@ -260,6 +262,7 @@ static int apply_value(render_options *o, int c, const char *arg)
     case OPT_DEPTH: o->depth = 1; break;
     case OPT_NORMALS: o->normals = 1; break;
     case OPT_COMPARE: o->compare = 1; break;
+    case OPT_FORCE: sc_atomic_allow_read_only(1); break;
     case OPT_FOV:
         if (sc_parse_double(arg, &o->fov) < 0 || !(o->fov > 0.0 && o->fov < 180.0)) {
             sc_error("render: --fov %s: expected degrees between 0 and 180", arg);
@@ -325,6 +328,7 @@ static const struct option long_options[] = {
     {"compare", no_argument, NULL, OPT_COMPARE},
     {"output-dir", required_argument, NULL, OPT_OUTPUT_DIR},
     {"format", required_argument, NULL, 'f'},
+    {"force", no_argument, NULL, OPT_FORCE},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0}};
 

@@ -68,6 +68,8 @@ static void usage(FILE *out)
             "      --sqrt-x             the heat map's x at the square root of its position\n"
             "                           (BRDF Explorer's theta_h^2 mapping)\n"
             "      --exr-type T         half|float (default float)\n"
+            "      --force              replace read-only files given to -o, --plot, --image,\n"
+            "                           --heatmap\n"
             "  -h, --help               this help\n"
             "\n"
             "example: shadecalc sweep --var x=0:1:101 'pow(x, 32.0)'\n"
@@ -79,7 +81,7 @@ static void usage(FILE *out)
 enum {
     OPT_N = 256, OPT_V, OPT_P, OPT_EYE, OPT_TANGENT, OPT_VAR, OPT_LOG, OPT_PRESET, OPT_PLOT,
     OPT_POLAR, OPT_TITLE, OPT_XLABEL, OPT_YLABEL, OPT_XLOG, OPT_YLOG, OPT_YRANGE, OPT_IMAGE,
-    OPT_EXR_TYPE, OPT_HEATMAP, OPT_TONE, OPT_EXPOSURE, OPT_SQRT_X
+    OPT_EXR_TYPE, OPT_HEATMAP, OPT_TONE, OPT_EXPOSURE, OPT_SQRT_X, OPT_FORCE
 };
 
 static int parse_yrange(const char *arg, sweep_picture_options *o)
@@ -150,6 +152,7 @@ static int option_value(sweep_options *o, int c, const char *arg)
         sc_error("sweep: unknown format '%s' (csv, tsv, jsonl)", arg);
         return SC_EXIT_USAGE;
     case 'o': o->output = arg; return sc_check_output_name("sweep", "-o", arg, "table");
+    case OPT_FORCE: sc_atomic_allow_read_only(1); return SC_EXIT_OK;
     case 'j':
         if (sc_parse_long(arg, &o->threads) == 0 && o->threads >= 1 && o->threads <= MAX_THREADS)
             return SC_EXIT_OK;
@@ -226,6 +229,7 @@ static int parse_options(int argc, char **argv, sweep_options *o)
         {"tone", required_argument, NULL, OPT_TONE},
         {"exposure", required_argument, NULL, OPT_EXPOSURE},
         {"sqrt-x", no_argument, NULL, OPT_SQRT_X},
+        {"force", no_argument, NULL, OPT_FORCE},
         {"help", no_argument, NULL, 'h'},            {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();

@@ -1,9 +1,13 @@
 /* shadecalc: dispatch to the subcommand named by argv[1]. */
 #include "cli/cli.h"
 
+#include <errno.h>
+#include <fcntl.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "commands.h"
+#include "shadecalc/file.h"
 #include "util/text.h"
 
 static const sc_command *const commands[] = {SC_COMMANDS NULL};
@@ -44,7 +48,36 @@ static int run_command(int argc, char **argv)
     return SC_EXIT_USAGE;
 }
 
-int main(int argc, char **argv)
+/* A closed standard descriptor (`>&-`) gets /dev/null opened the other way round: using it
+ * still fails (EBADF), and no file shadecalc opens lands on it to be written as stdout. */
+static void occupy_closed_std_fds(void)
+{
+    for (int fd = STDIN_FILENO; fd <= STDERR_FILENO; fd++)
+        if (fcntl(fd, F_GETFD) == -1 && open("/dev/null", fd ? O_RDONLY : O_WRONLY) != fd)
+            return; /* no /dev/null: the descriptors stay as they are */
+}
+
+/* Flushes and closes standard output: output lost (a full disk, a closed descriptor) turns a
+ * success into a runtime error. A command that failed already reported its own error; a reader
+ * that quit (EPIPE, seen by sweep, which ignores SIGPIPE) is not reported. */
+static int finish_stdout(int status)
+{
+    errno = 0;
+    int failed = fflush(stdout) != 0 || ferror(stdout);
+    int errnum = errno;
+    errno = 0;
+    if (fclose(stdout) != 0 && !failed) {
+        failed = 1;
+        errnum = errno;
+    }
+    if (!failed || status != SC_EXIT_OK)
+        return status;
+    if (errnum != EPIPE)
+        sc_error("standard output: %s", strerror(errnum ? errnum : EIO));
+    return SC_EXIT_RUNTIME;
+}
+
+static int dispatch(int argc, char **argv)
 {
     if (argc < 2) {
         print_help(stderr);
@@ -64,4 +97,13 @@ int main(int argc, char **argv)
         return SC_EXIT_OK;
     }
     return run_command(argc - 1, argv + 1);
+}
+
+int main(int argc, char **argv)
+{
+    occupy_closed_std_fds();
+    if (sc_atomic_remove_on_signals() != 0)
+        sc_warning("cannot install the signal handlers: %s (an interrupted write may leave its "
+                   "temporary)", strerror(errno));
+    return finish_stdout(dispatch(argc, argv));
 }

@@ -1,5 +1,6 @@
 /* shadecalc sweep --plot and --image: the rows gathered into an SVG plot (shadecalc/plot.h)
  * and an EXR image (shadecalc/image.h), both written atomically at the end. */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,11 +56,12 @@ static int open_plot(sweep_pictures *p)
 static int open_image(sweep_pictures *p)
 {
     char err[256];
-    if (sc_sweep_image_init(&p->image, p->grid, p->plan->n_results, err, sizeof err) < 0) {
+    int rc = sc_sweep_image_init(&p->image, p->grid, p->plan->n_results, err, sizeof err);
+    if (rc == -1) {
         sc_error("sweep: --image %s: %s", p->o.image, err);
         return SC_EXIT_USAGE;
     }
-    return SC_EXIT_OK;
+    return rc == 0 ? SC_EXIT_OK : SC_EXIT_RUNTIME; /* out of memory: reported by the caller */
 }
 
 int sweep_pictures_open(sweep_pictures **out, const sweep_picture_options *o,
@@ -119,11 +121,13 @@ static int write_svg(const char *path, int (*writer)(FILE *, const void *), cons
     char err[512];
     int status = SC_EXIT_RUNTIME;
     sc_atomic_file *f = sc_atomic_open(path, err, sizeof err);
+    errno = 0;
     if (f && writer(sc_atomic_stream(f), what) == 0)
         status = sc_atomic_commit(f, err, sizeof err) == 0 ? SC_EXIT_OK : SC_EXIT_RUNTIME;
     else if (f) {
+        int errnum = errno; /* of the failed write */
         sc_atomic_abort(f);
-        snprintf(err, sizeof err, "%s: write error", path);
+        snprintf(err, sizeof err, "%s: %s", path, errnum ? strerror(errnum) : "write error");
     }
     if (status != SC_EXIT_OK)
         sc_error("%s", err);

@@ -38,12 +38,16 @@ int sc_sweep_image_init(sc_image *img, const sc_sweep_grid *g, int n_results, ch
     }
     double values = (double)g->var[0].count * (double)g->var[1].count * n_results;
     if (values > (double)SC_EXR_MAX_VALUES || g->var[0].count > 1 << 24 ||
-        g->var[1].count > 1 << 24 ||
-        sc_image_init(img, (int)g->var[0].count, (int)g->var[1].count, n_results,
-                      n_results == 1 ? y : rgba) < 0) {
+        g->var[1].count > 1 << 24) {
         snprintf(err, errsize, "an image of %ld x %ld pixels is too large", g->var[0].count,
                  g->var[1].count);
         return -1;
+    }
+    if (sc_image_init(img, (int)g->var[0].count, (int)g->var[1].count, n_results,
+                      n_results == 1 ? y : rgba) < 0) { /* the arguments are valid: no memory */
+        snprintf(err, errsize, "out of memory for an image of %ld x %ld pixels",
+                 g->var[0].count, g->var[1].count);
+        return -2;
     }
     return 0;
 }
