@@ -54,4 +54,23 @@ double sc_k_atan(double x);
 /* atan2(y, x) for doubles with every C99 Annex F special case (atan.c). */
 double sc_k_atan2(double y, double x);
 
+/* The binary64 value each binary32 built-in rounds once: sc_<name>f(x) == (float) of it for
+ * every input, special values included. Each one's error bound against the exact value is
+ * stated, with its derivation, in the first comment of its source file; tests/exhaustive/
+ * checks every binary32 input with those bounds (make exhaustive). */
+double sc_k_exp_core(float x);
+double sc_k_exp2_core(float x);
+double sc_k_log_core(float x);
+double sc_k_log2_core(float x);
+double sc_k_sin_core(float x);
+double sc_k_cos_core(float x);
+double sc_k_tan_core(float x);
+double sc_k_asin_core(float x);
+double sc_k_acos_core(float x);
+double sc_k_atan_core(float x);
+double sc_k_sqrt_core(float x);
+double sc_k_inversesqrt_core(float x);
+double sc_k_pow_core(float x, float y);
+double sc_k_atan2_core(float y, float x);
+
 #endif
