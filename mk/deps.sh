@@ -4,7 +4,7 @@
 # tests only: they parse the SVG and JSON output with a real parser.
 set -eu
 need=""
-for pkg in libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3; do
+for pkg in libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3 libmpfr-dev; do
     dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed' || need="$need $pkg"
 done
 [ -z "$need" ] && exit 0
