@@ -71,7 +71,8 @@ typedef struct {
 typedef struct {
     uint64_t inputs, decided, settled; /* settled: sent to MPFR */
     uint64_t wrong, not_core, bound_broken;
-    double max_ulp; /* largest error over all inputs (within 2^-20 ULP), at (worst_x, worst_y) */
+    double max_ulp; /* largest error of the results not correctly rounded (0 when all are:
+                       their error is at most 0.5 ULP), at (worst_x, worst_y) */
     float worst_x, worst_y;
     exh_miss *misses; /* every miss, sorted by input */
     size_t n_misses, cap_misses;
