@@ -325,7 +325,8 @@ int exh_run(const exh_subject *s, const exh_run_spec *spec, exh_stats *out)
         pthread_join(t[i], NULL);
     free(t);
     pthread_mutex_destroy(&rs.lock);
-    qsort(rs.total.misses, rs.total.n_misses, sizeof *rs.total.misses, by_input);
+    if (rs.total.n_misses)
+        qsort(rs.total.misses, rs.total.n_misses, sizeof *rs.total.misses, by_input);
     *out = rs.total;
     return rs.failed ? -1 : 0;
 }
