@@ -43,6 +43,14 @@ static inline double sc_k_horner(double x, const double *c, int n)
     return r;
 }
 
+/* 1 if r, known to within eps·|r|, might round to the binary32 on either side of a midpoint:
+ * r − eps·r and r + eps·r round apart. Where a kernel's result is that close, it resolves the
+ * input exactly (pow.c) or from a table of hard cases (log.c). */
+static inline int sc_k_near_midpoint(double r, double eps)
+{
+    return (float)(r - r * eps) != (float)(r + r * eps);
+}
+
 /* 2^x for any double x (clamped to ±1000, beyond which every binary32 result is 0 or +Inf);
  * relative error below 2^-52 (exp2.c). */
 double sc_k_exp2(double x);

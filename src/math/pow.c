@@ -40,13 +40,6 @@ static int is_integer(float y)
     return fabsf(y) >= 16777216.0f || y == (float)sc_k_rint((double)y);
 }
 
-/* 1 if the core value r might round to either side of a binary32 midpoint: r ± 2^-40 |r|
- * (the core's bound, below 2^-40.7 for every result in binary32's range) round apart. */
-static int near_midpoint(double r)
-{
-    return (float)(r - r * 0x1p-40) != (float)(r + r * 0x1p-40);
-}
-
 /* ax^y exactly, when it is a double with |log2| <= 1000 (the exact and midpoint results that
  * the core cannot round): y = n/2^j needs ax to be a 2^j-th power (exact square roots, checked
  * with fma), then ax = m·2^k with m odd needs m^n < 2^53 (n >= 1), or m = 1. 0 otherwise. */
@@ -94,7 +87,8 @@ double sc_k_pow_core(float x, float y)
     double lg = ax == 0.0 ? -INFINITY : ax == INFINITY ? INFINITY : sc_k_log2(ax);
     double t = (double)y * lg; /* ±Inf·finite or finite: never 0·Inf (y ≠ 0, lg ≠ 0) */
     double r = sc_k_exp2(t), exact;
-    if (near_midpoint(r) && exact_power(ax, (double)y, &exact))
+    /* the core's bound, below 2^-40.7 for every result in binary32's range */
+    if (sc_k_near_midpoint(r, 0x1p-40) && exact_power(ax, (double)y, &exact))
         r = exact;
     return sign * r;
 }
