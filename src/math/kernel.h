@@ -51,6 +51,24 @@ static inline int sc_k_near_midpoint(double r, double eps)
     return (float)(r - r * eps) != (float)(r + r * eps);
 }
 
+/* Hard cases (as CORE-MATH keeps them): inputs whose exact result lies closer to a binary32
+ * midpoint than a kernel's bound, each with its value within one binary64 ULP on the exact
+ * value's side of the midpoint. sc_k_lookup_hard gives x's value, or r when x has no entry. */
+typedef struct {
+    uint32_t bits;
+    double value;
+} sc_k_hard_case;
+
+static inline double sc_k_lookup_hard(const sc_k_hard_case *table, int n, float x, double r)
+{
+    uint32_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    for (int i = 0; i < n; i++)
+        if (table[i].bits == bits)
+            return table[i].value;
+    return r;
+}
+
 /* 2^x for any double x (clamped to ±1000, beyond which every binary32 result is 0 or +Inf);
  * relative error below 2^-52 (exp2.c). */
 double sc_k_exp2(double x);

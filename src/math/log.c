@@ -24,7 +24,6 @@
  * of three hard cases (log_hard_cases).
  */
 #include <math.h>
-#include <stddef.h>
 
 #include "math/kernel.h"
 #include "shadecalc/glsl.h"
@@ -78,28 +77,14 @@ double sc_k_log2_core(float x)
     return sc_k_log2((double)x);
 }
 
-/* Hard cases (as CORE-MATH keeps them): inputs whose log lies closer to a binary32 midpoint
- * than the core's bound, so that the core rounds to the wrong side; make exhaustive found these
- * three over all 2^32 inputs. Each value is log x within one binary64 ULP, on the side of the
- * midpoint where the exact value lies (MPFR, 300 bits): the midpoint's double plus one ULP. */
-static const struct {
-    uint32_t bits;
-    double value;
-} log_hard_cases[] = {
+/* The hard cases of log: make exhaustive found these three over all 2^32 inputs (the core
+ * rounds them to the wrong side); values from MPFR at 300 bits: the midpoint's double plus one
+ * ULP. */
+static const sc_k_hard_case log_hard_cases[] = {
     {0x4c5d65a5, 0x1.1e06950000001p+4}, /* log(58037908) = 17.87660694122314468798... */
     {0x65d890d3, 0x1.a9a3f10000001p+5}, /* log(1.2783784e23) = 53.20504951477050802794... */
     {0x6f31a8ec, 0x1.08b5110000001p+6}, /* log(5.4983061e28) = 66.17682266235352211194... */
 };
-
-static double log_hard_case(float x, double r)
-{
-    uint32_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    for (size_t i = 0; i < sizeof log_hard_cases / sizeof log_hard_cases[0]; i++)
-        if (log_hard_cases[i].bits == bits)
-            return log_hard_cases[i].value;
-    return r;
-}
 
 double sc_k_log_core(float x)
 {
@@ -109,7 +94,7 @@ double sc_k_log_core(float x)
     int e;
     double m = split((double)x, &e);
     double r = (double)e * ln2 + log_reduced(m);
-    return sc_k_near_midpoint(r, 0x1p-47) ? log_hard_case(x, r) : r;
+    return sc_k_near_midpoint(r, 0x1p-47) ? sc_k_lookup_hard(log_hard_cases, 3, x, r) : r;
 }
 
 float sc_log2f(float x) { return (float)sc_k_log2_core(x); }
