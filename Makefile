@@ -218,6 +218,23 @@ bench: all
 accuracy: all
 	$(BUILD)/bench/accuracy_table
 
+# ---- correct rounding over every binary32 input (tests/exhaustive/, MPFR) ------------------
+# Not part of check: about 1.5 hours of CPU (EXHAUSTIVE_ARGS="--stride 257" for a sample).
+# check runs the same checker on a sample (tests/unit/test_exhaustive.c).
+EXH_OBJS := $(call obj,$(filter-out tests/exhaustive/main.c,$(wildcard tests/exhaustive/*.c)))
+EXH_LIBS := -lmpfr -lgmp
+.PHONY: exhaustive
+exhaustive: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/tests/exhaustive
+	$(BUILD)/tests/exhaustive --outdir $(BUILD)/exhaustive $(EXHAUSTIVE_ARGS)
+
+$(BUILD)/tests/exhaustive: $(BUILD)/obj/tests/exhaustive/main.o $(EXH_OBJS) $(STATIC)
+	$(CC) $(LDALL) -o $@ $^ $(EXH_LIBS) $(LDLIBS)
+
+$(BUILD)/tests/test_exhaustive: $(EXH_OBJS)
+$(BUILD)/tests/test_exhaustive: SUP_OBJS += $(EXH_OBJS)
+$(BUILD)/tests/test_exhaustive: LDLIBS := $(EXH_LIBS) $(LDLIBS)
+
 # ---- install -----------------------------------------------------------------
 LIBDIR := $(DESTDIR)$(PREFIX)/lib
 install: all

@@ -43,6 +43,32 @@ static inline double sc_k_horner(double x, const double *c, int n)
     return r;
 }
 
+/* 1 if r, known to within eps·|r|, might round to the binary32 on either side of a midpoint:
+ * r − eps·r and r + eps·r round apart. Where a kernel's result is that close, it resolves the
+ * input exactly (pow.c) or from a table of hard cases (log.c). */
+static inline int sc_k_near_midpoint(double r, double eps)
+{
+    return (float)(r - r * eps) != (float)(r + r * eps);
+}
+
+/* Hard cases (as CORE-MATH keeps them): inputs whose exact result lies closer to a binary32
+ * midpoint than a kernel's bound, each with its value within one binary64 ULP on the exact
+ * value's side of the midpoint. sc_k_lookup_hard gives x's value, or r when x has no entry. */
+typedef struct {
+    uint32_t bits;
+    double value;
+} sc_k_hard_case;
+
+static inline double sc_k_lookup_hard(const sc_k_hard_case *table, int n, float x, double r)
+{
+    uint32_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    for (int i = 0; i < n; i++)
+        if (table[i].bits == bits)
+            return table[i].value;
+    return r;
+}
+
 /* 2^x for any double x (clamped to ±1000, beyond which every binary32 result is 0 or +Inf);
  * relative error below 2^-52 (exp2.c). */
 double sc_k_exp2(double x);
@@ -53,5 +79,17 @@ double sc_k_log2(double x);
 double sc_k_atan(double x);
 /* atan2(y, x) for doubles with every C99 Annex F special case (atan.c). */
 double sc_k_atan2(double y, double x);
+
+/* The binary64 value each binary32 built-in rounds once: sc_<name>f(x) == (float) of it for
+ * every input, special values included. Each one's error bound against the exact value is
+ * stated, with its derivation, in the first comment of its source file; tests/exhaustive/
+ * checks every binary32 input with those bounds (make exhaustive). */
+#define SC_K_CORE1(name) double sc_k_##name##_core(float x);
+SC_K_CORE1(exp) SC_K_CORE1(exp2) SC_K_CORE1(log) SC_K_CORE1(log2) SC_K_CORE1(sin) SC_K_CORE1(cos)
+SC_K_CORE1(tan) SC_K_CORE1(asin) SC_K_CORE1(acos) SC_K_CORE1(atan) SC_K_CORE1(sqrt)
+SC_K_CORE1(inversesqrt)
+#undef SC_K_CORE1
+double sc_k_pow_core(float x, float y);
+double sc_k_atan2_core(float y, float x);
 
 #endif
