@@ -104,9 +104,12 @@ build-all: $(STATIC) $(SHARED) $(BIN) $(PROG_BINS)
 deps:
 	@sh mk/deps.sh
 
+# The library exports what the public headers declare (shadecalc/api.h), nothing else.
+$(LIB_OBJS): VISFLAGS := -fvisibility=hidden
+
 $(BUILD)/obj/%.o: %.c $(CONFIG_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(ISAFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(ISAFLAGS) $(VISFLAGS) -MMD -MP -c $< -o $@
 
 $(BUILD)/gen/commands.h: $(CMD_SRCS) mk/gen-commands.sh
 	@mkdir -p $(dir $@)

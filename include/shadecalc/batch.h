@@ -28,6 +28,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 typedef enum { SC_ISA_SCALAR, SC_ISA_SSE41, SC_ISA_AVX2, SC_ISA_COUNT } sc_isa;
 
 const char *sc_isa_name(sc_isa isa);
@@ -206,5 +210,7 @@ const sc_batch_entry *sc_batch_find(const char *kernel, const char *tier, sc_isa
 /* Runs kernel × tier on the active instruction set (falling back to the best one that has
  * it, then scalar). Returns 0, or -1 if no such kernel or tier. */
 int sc_batch_run(const char *kernel, const char *tier, const sc_batch_args *a);
+
+SC_END_DECLS
 
 #endif

@@ -20,6 +20,10 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 typedef struct sc_atomic_file sc_atomic_file;
 
 /* Opens a temporary next to path for writing; NULL with err ("PATH: reason") on failure
@@ -38,5 +42,7 @@ int sc_atomic_commit(sc_atomic_file *f, char *err, size_t errsize);
 
 /* Closes and removes the temporary; the target is untouched. Frees f. NULL is a no-op. */
 void sc_atomic_abort(sc_atomic_file *f);
+
+SC_END_DECLS
 
 #endif

@@ -19,6 +19,10 @@
 #ifndef SHADECALC_GLSL_H
 #define SHADECALC_GLSL_H
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 float sc_radiansf(float degrees);
 float sc_degreesf(float radians);
 float sc_sinf(float x);
@@ -49,5 +53,7 @@ float sc_clampf(float x, float lo, float hi);
 float sc_mixf(float x, float y, float a);
 float sc_stepf(float edge, float x);
 float sc_smoothstepf(float edge0, float edge1, float x);
+
+SC_END_DECLS
 
 #endif

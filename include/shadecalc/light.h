@@ -23,7 +23,10 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/precision.h"
+
+SC_BEGIN_DECLS
 
 typedef enum {
     SC_ATTEN_NONE,
@@ -89,5 +92,7 @@ void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const 
 /* 0 if the parameters are inside their domains (SPEC §3–§4), else -1 with a message naming the
  * key and its valid range ("cutoff=120: spot=opengl takes 0..90 or 180"). */
 int sc_light_validate(const sc_light *light, char *msg, size_t size);
+
+SC_END_DECLS
 
 #endif
