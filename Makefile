@@ -14,8 +14,10 @@
 #   bench/*.c          the benchmark harness, linked into the shadecalc binary
 #   bench/programs/*.c standalone programs, one main each (accuracy_table)
 
-VERSION   := 0.1.0
-SOVERSION := 0
+# The version is written once, in include/shadecalc/version.h.
+VERSION   := $(shell sed -n 's/^\#define SC_VERSION_\(MAJOR\|MINOR\|PATCH\) *//p' \
+               include/shadecalc/version.h | paste -sd.)
+SOVERSION := $(firstword $(subst ., ,$(VERSION)))
 PREFIX    ?= /usr/local
 DESTDIR   ?=
 
