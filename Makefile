@@ -213,7 +213,7 @@ accuracy: all
 LIBDIR := $(DESTDIR)$(PREFIX)/lib
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/include/shadecalc $(LIBDIR)/pkgconfig \
-	    $(DESTDIR)$(PREFIX)/share/man/man1
+	    $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man3
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/shadecalc
 	install -m 644 include/shadecalc/*.h $(DESTDIR)$(PREFIX)/include/shadecalc/
 	install -m 644 $(STATIC) $(LIBDIR)/
@@ -223,11 +223,13 @@ install: all
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@EXR@|$(EXR_LIBS)|' \
 	    mk/shadecalc.pc.in > $(LIBDIR)/pkgconfig/shadecalc.pc
 	install -m 644 man/shadecalc.1 $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1
+	install -m 644 man/shadecalc.3 $(DESTDIR)$(PREFIX)/share/man/man3/shadecalc.3
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/shadecalc $(LIBDIR)/libshadecalc.a \
 	    $(LIBDIR)/libshadecalc.so $(LIBDIR)/$(SONAME) $(LIBDIR)/libshadecalc.so.$(VERSION) \
-	    $(LIBDIR)/pkgconfig/shadecalc.pc $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1
+	    $(LIBDIR)/pkgconfig/shadecalc.pc $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1 \
+	    $(DESTDIR)$(PREFIX)/share/man/man3/shadecalc.3
 	rm -rf $(DESTDIR)$(PREFIX)/include/shadecalc
 
 format:
