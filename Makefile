@@ -146,7 +146,7 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) test-bins
-	@$(MAKE) --no-print-directory unit e2e
+	@$(MAKE) --no-print-directory unit e2e lib-tests
 	@$(MAKE) --no-print-directory -j$(JOBS) SAN=1 BUILD=$(BUILD)-san test-bins
 	@$(MAKE) --no-print-directory SAN=1 BUILD=$(BUILD)-san unit e2e
 	@$(MAKE) --no-print-directory fuzz
@@ -165,6 +165,13 @@ unit: $(UNIT_BINS)
 
 e2e: $(BIN)
 	@sh tests/e2e/run.sh $(BIN)
+
+# The library as its users see it: the exported symbols against the headers, every header
+# alone in C and C++, then an install into a temporary prefix used through pkg-config.
+.PHONY: lib-tests
+lib-tests: build-all
+	@sh tests/install/exports.sh $(BUILD) '$(CC)'
+	@sh tests/install/run.sh '$(MAKE)' '$(CC)'
 
 # libFuzzer harnesses, built with clang against an instrumented copy of the library:
 # a bounded smoke run in `check`; `make fuzz FUZZ_SECONDS=600` for a long one.
