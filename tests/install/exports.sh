@@ -14,16 +14,10 @@
 #  - the shared library's file name and soname carry the version of shadecalc/version.h.
 set -u
 BUILD=$1 CC=$2
+TEST=exports
+. tests/install/lib.sh
 so=$BUILD/libshadecalc.so
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() {
-    echo "FAIL exports: $*"
-    fails=$((fails + 1))
-}
-cxx_compilers=$(for c in g++ clang++; do command -v "$c" >/dev/null && echo "$c"; done)
-strict='-Wall -Wextra -Wpedantic -Werror -Iinclude'
+strict="$strict -Iinclude"
 
 # ---- each header alone, in C and in C++ ----
 for h in include/shadecalc/*.h; do
@@ -46,8 +40,7 @@ done
 
 # ---- declared against exported ----
 if ! command -v gcc >/dev/null; then
-    echo "exports: gcc not found: the symbol comparison needs its -aux-info; skipped"
-    exit "$((fails != 0))"
+    finish "headers alone; gcc not found: the symbol comparison needs its -aux-info, skipped"
 fi
 echo '#include "shadecalc/shadecalc.h"' >"$tmp/all.c"
 gcc -std=c11 -Iinclude -fsyntax-only -aux-info "$tmp/aux" "$tmp/all.c" || fail "gcc -aux-info"
@@ -64,7 +57,6 @@ compare() { # KIND
     comm -13 "$tmp/declared.$1" "$tmp/exported.$1" >"$tmp/extra"
     [ -s "$tmp/missing" ] && fail "declared in a header, not exported ($1):" $(cat "$tmp/missing")
     [ -s "$tmp/extra" ] && fail "exported, declared in no header ($1):" $(cat "$tmp/extra")
-    echo "exports: $(wc -l <"$tmp/declared.$1") $1 symbols declared, $(wc -l <"$tmp/exported.$1") exported"
 }
 compare fn
 compare data
@@ -119,5 +111,4 @@ version=$major.$(sed -n 's/^#define SC_VERSION_MINOR *//p' include/shadecalc/ver
 soname=$(readelf -d "$so" | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')
 [ "$soname" = "libshadecalc.so.$major" ] || fail "soname '$soname', want libshadecalc.so.$major"
 
-[ "$fails" -eq 0 ] && echo "exports: passed"
-[ "$fails" -eq 0 ]
+finish "$(wc -l <"$tmp/exported.fn") functions and $(wc -l <"$tmp/exported.data") variables exported, as declared"

@@ -12,13 +12,8 @@
 #  - `make install DESTDIR=<stage>` puts the same files under the stage, and nothing else.
 set -u
 MAKE=$1 CC=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() {
-    echo "FAIL install: $*"
-    fails=$((fails + 1))
-}
+TEST=install
+. tests/install/lib.sh
 make_quietly() { # ARGS...: fails the test with make's output if make fails
     $MAKE --no-print-directory CC="$CC" "$@" >"$tmp/make.log" 2>&1 && return 0
     cat "$tmp/make.log"
@@ -37,7 +32,6 @@ version=$(pkg-config --modversion shadecalc) || fail "pkg-config does not find s
 cflags=$(pkg-config --cflags shadecalc)
 libs=$(pkg-config --libs shadecalc)
 static_libs=$(pkg-config --static --libs shadecalc | sed "s|-lshadecalc|$prefix/lib/libshadecalc.a|")
-strict='-Wall -Wextra -Wpedantic -Werror'
 
 run_user() { # NAME: runs the built program, checks what it printed
     LD_LIBRARY_PATH=$prefix/lib "$tmp/$1" >"$tmp/$1.out" 2>&1 || fail "$1 exits $?: $(grep -v '^ok ' "$tmp/$1.out")"
@@ -55,8 +49,7 @@ if $CC -std=c11 $strict $cflags tests/install/user.c -o "$tmp/user-c" $libs -lm 
     needs_shared user-c yes
     run_user user-c
 else fail "C build with pkg-config's flags: $(head -5 "$tmp/err")"; fi
-for cxx in g++ clang++; do
-    command -v "$cxx" >/dev/null || continue
+for cxx in $cxx_compilers; do
     # shellcheck disable=SC2086
     if $cxx -x c++ -std=c++11 $strict $cflags tests/install/user.c -o "$tmp/user-$cxx" $libs 2>"$tmp/err"; then
         run_user "user-$cxx"
@@ -100,5 +93,4 @@ grep -qx 'prefix=/usr/local' "$stage/usr/local/lib/pkgconfig/shadecalc.pc" || fa
 make_quietly uninstall DESTDIR="$stage" PREFIX=/usr/local
 [ -z "$(files_under "$stage")" ] || fail "make uninstall DESTDIR= left: $(files_under "$stage")"
 
-[ "$fails" -eq 0 ] && echo "install: passed ($(wc -l <"$tmp/installed") files installed and removed; C, C++, static)"
-[ "$fails" -eq 0 ]
+finish "$(wc -l <"$tmp/installed") files installed and removed; C, C++, static"
