@@ -14,27 +14,31 @@
 
 static int failures = 0;
 
-static void report(const char *name, double got, double want, double tolerance) {
+static void report(const char *name, double got, double want, double tolerance)
+{
     int ok = fabs(got - want) <= tolerance;
     printf("%s %s %.9g (want %.9g)\n", ok ? "ok" : "FAIL", name, got, want);
     failures += !ok;
 }
 
 /* One ULP of binary32 at x (x a normal number): the bound of the accurate tier. */
-static double ulp_binary32(double x) {
+static double ulp_binary32(double x)
+{
     int exponent;
     frexp(x, &exponent);
     return ldexp(1.0, exponent - 24);
 }
 
-static void check_builtins(void) {
+static void check_builtins(void)
+{
     double want = pow(2.0, 0.5);
     report("sc_powf(2,0.5)", sc_powf(2.0f, 0.5f), want, ulp_binary32(want));
     want = sin(1.0);
     report("sc_sinf(1)", sc_sinf(1.0f), want, ulp_binary32(want));
 }
 
-static void check_vectors(void) {
+static void check_vectors(void)
+{
     sc_vec3 a = sc_vec3_make(1.0f, 2.0f, 3.0f);
     sc_vec3 b = sc_vec3_make(4.0f, 5.0f, 6.0f);
     sc_vec3 z = sc_vec3_cross(sc_vec3_make(1.0f, 0.0f, 0.0f), sc_vec3_make(0.0f, 1.0f, 0.0f));
@@ -42,7 +46,8 @@ static void check_vectors(void) {
     report("sc_vec3_cross.z", z.z, 1.0, 0.0);
 }
 
-static void check_expression(void) {
+static void check_expression(void)
+{
     sc_expr_error err;
     sc_expr *e = sc_expr_compile("length(vec2(3.0, 4.0)) / 2.0", NULL, 0, &err);
     if (e == NULL) {
@@ -56,7 +61,8 @@ static void check_expression(void) {
 }
 
 /* Lambert: f = c_diff/π for every pair of directions above the horizon. */
-static void check_brdf(void) {
+static void check_brdf(void)
+{
     static const double pi = 3.14159265358979323846;
     const double n[3] = {0.0, 0.0, 1.0};
     const double l[3] = {0.6, 0.0, 0.8};
@@ -75,10 +81,11 @@ static void check_brdf(void) {
     report("sc_brdf_eval(lambert)", terms.f[0], 0.5 / pi, 1e-15);
 }
 
-int main(void) {
+int main(void)
+{
     int same_version = strcmp(sc_version(), SC_VERSION_STRING) == 0;
-    printf("version %s (header %s, %d.%d.%d)\n", sc_version(), SC_VERSION_STRING,
-           SC_VERSION_MAJOR, SC_VERSION_MINOR, SC_VERSION_PATCH);
+    printf("version %s (header %s, %d.%d.%d)\n", sc_version(), SC_VERSION_STRING, SC_VERSION_MAJOR,
+           SC_VERSION_MINOR, SC_VERSION_PATCH);
     if (!same_version) {
         printf("FAIL the library is not the version of the header\n");
         failures++;
