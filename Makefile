@@ -106,8 +106,10 @@ build-all: $(STATIC) $(SHARED) $(BIN) $(PROG_BINS)
 deps:
 	@sh mk/deps.sh
 
-# The library exports what the public headers declare (shadecalc/api.h), nothing else.
+# The library exports what the public headers declare (shadecalc/api.h), nothing else; its
+# objects depend on api.h, so that objects compiled before that rule are compiled again.
 $(LIB_OBJS): VISFLAGS := -fvisibility=hidden
+$(LIB_OBJS): include/shadecalc/api.h
 
 $(BUILD)/obj/%.o: %.c $(CONFIG_STAMP)
 	@mkdir -p $(dir $@)

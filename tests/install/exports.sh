@@ -11,7 +11,8 @@
 #    also keeps every static inline function of the headers (-fkeep-inline-functions), so an
 #    inline function calling an internal function fails here;
 #  - man/shadecalc.3's accuracy table lists sc_accuracy_table's rows;
-#  - the shared library's file name and soname carry the version of shadecalc/version.h.
+#  - the shared library's file name and soname, and both manual pages' headers, carry the
+#    version of shadecalc/version.h.
 set -u
 BUILD=$1 CC=$2
 TEST=exports
@@ -110,5 +111,8 @@ version=$major.$(sed -n 's/^#define SC_VERSION_MINOR *//p' include/shadecalc/ver
 [ -f "$BUILD/libshadecalc.so.$version" ] || fail "no $BUILD/libshadecalc.so.$version (version.h says $version)"
 soname=$(readelf -d "$so" | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')
 [ "$soname" = "libshadecalc.so.$major" ] || fail "soname '$soname', want libshadecalc.so.$major"
+for page in man/shadecalc.1 man/shadecalc.3; do
+    grep -q "^\.TH .* \"shadecalc $version\"" "$page" || fail "$page: its .TH line does not say shadecalc $version"
+done
 
 finish "$(wc -l <"$tmp/exported.fn") functions and $(wc -l <"$tmp/exported.data") variables exported, as declared"
