@@ -14,8 +14,10 @@
 #   bench/*.c          the benchmark harness, linked into the shadecalc binary
 #   bench/programs/*.c standalone programs, one main each (accuracy_table)
 
-VERSION   := 0.1.0
-SOVERSION := 0
+# The version is written once, in include/shadecalc/version.h.
+VERSION   := $(shell sed -n 's/^\#define SC_VERSION_\(MAJOR\|MINOR\|PATCH\) *//p' \
+               include/shadecalc/version.h | paste -sd.)
+SOVERSION := $(firstword $(subst ., ,$(VERSION)))
 PREFIX    ?= /usr/local
 DESTDIR   ?=
 
@@ -118,9 +120,14 @@ build-all: $(STATIC) $(SHARED) $(BIN) $(PROG_BINS)
 deps:
 	@sh mk/deps.sh
 
+# The library exports what the public headers declare (shadecalc/api.h), nothing else; its
+# objects depend on api.h, so that objects compiled before that rule are compiled again.
+$(LIB_OBJS): VISFLAGS := -fvisibility=hidden
+$(LIB_OBJS): include/shadecalc/api.h
+
 $(BUILD)/obj/%.o: %.c $(CONFIG_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(ISAFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(ISAFLAGS) $(VISFLAGS) -MMD -MP -c $< -o $@
 
 $(BUILD)/gen/commands.h: $(CMD_SRCS) mk/gen-commands.sh
 	@mkdir -p $(dir $@)
@@ -155,7 +162,7 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) test-bins
-	@$(MAKE) --no-print-directory unit e2e
+	@$(MAKE) --no-print-directory unit e2e lib-tests
 	@$(MAKE) --no-print-directory -j$(JOBS) SAN=1 BUILD=$(BUILD)-san test-bins
 	@$(MAKE) --no-print-directory SAN=1 BUILD=$(BUILD)-san unit e2e
 	@$(MAKE) --no-print-directory fuzz
@@ -174,6 +181,13 @@ unit: $(UNIT_BINS)
 
 e2e: $(BIN)
 	@sh tests/e2e/run.sh $(BIN)
+
+# The library as its users see it: the exported symbols against the headers, every header
+# alone in C and C++, then an install into a temporary prefix used through pkg-config.
+.PHONY: lib-tests
+lib-tests: build-all
+	@sh tests/install/exports.sh $(BUILD) '$(CC)'
+	@sh tests/install/run.sh '$(MAKE)' '$(CC)'
 
 # libFuzzer harnesses, built with clang against an instrumented copy of the library:
 # a bounded smoke run in `check`; `make fuzz FUZZ_SECONDS=600` for a long one.
@@ -239,7 +253,7 @@ $(BUILD)/tests/test_exhaustive: LDLIBS := $(EXH_LIBS) $(LDLIBS)
 LIBDIR := $(DESTDIR)$(PREFIX)/lib
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/include/shadecalc $(LIBDIR)/pkgconfig \
-	    $(DESTDIR)$(PREFIX)/share/man/man1
+	    $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man3
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/shadecalc
 	install -m 644 include/shadecalc/*.h $(DESTDIR)$(PREFIX)/include/shadecalc/
 	install -m 644 $(STATIC) $(LIBDIR)/
@@ -249,15 +263,23 @@ install: all
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' -e 's|@EXR@|$(EXR_LIBS)|' \
 	    mk/shadecalc.pc.in > $(LIBDIR)/pkgconfig/shadecalc.pc
 	install -m 644 man/shadecalc.1 $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1
+	install -m 644 man/shadecalc.3 $(DESTDIR)$(PREFIX)/share/man/man3/shadecalc.3
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/shadecalc $(LIBDIR)/libshadecalc.a \
 	    $(LIBDIR)/libshadecalc.so $(LIBDIR)/$(SONAME) $(LIBDIR)/libshadecalc.so.$(VERSION) \
-	    $(LIBDIR)/pkgconfig/shadecalc.pc $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1
+	    $(LIBDIR)/pkgconfig/shadecalc.pc $(DESTDIR)$(PREFIX)/share/man/man1/shadecalc.1 \
+	    $(DESTDIR)$(PREFIX)/share/man/man3/shadecalc.3
 	rm -rf $(DESTDIR)$(PREFIX)/include/shadecalc
 
+# The style is .clang-format's; format-check fails, naming each place, where a file departs from it.
+FORMAT_FILES = $$(find src include tests bench -name '*.[ch]')
 format:
-	clang-format -i $$(find src include tests bench -name '*.[ch]')
+	clang-format -i $(FORMAT_FILES)
+
+.PHONY: format-check
+format-check:
+	clang-format --dry-run -Werror $(FORMAT_FILES)
 
 clean:
 	rm -rf build build-* 

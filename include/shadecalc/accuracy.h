@@ -18,6 +18,10 @@
 
 #include <stdint.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 typedef struct {
     const char *name;
     int arity;
@@ -52,5 +56,7 @@ uint64_t sc_accuracy_random(uint64_t *state);
  * (where the logarithms and powers round hardest). Deterministic for a given seed. */
 void sc_accuracy_measure(const sc_accuracy_row *r, long n_random, uint64_t seed,
                          sc_accuracy_stats *out);
+
+SC_END_DECLS
 
 #endif

@@ -32,6 +32,9 @@
 #include <stdint.h>
 
 #include "shadecalc/shade.h"
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
 
 typedef enum { SC_ISA_SCALAR, SC_ISA_SSE41, SC_ISA_AVX2, SC_ISA_COUNT } sc_isa;
 
@@ -236,5 +239,7 @@ const sc_batch_entry *sc_batch_plan_entry(const sc_batch_plan *plan);
 /* The shade kernel's inputs (n, v, p as nine arrays) and outputs (r, g, b) for n points. */
 void sc_batch_plan_shade(const sc_batch_plan *plan, const float *const in[9], float *const out[3],
                          size_t n);
+
+SC_END_DECLS
 
 #endif

@@ -32,7 +32,10 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/precision.h"
+
+SC_BEGIN_DECLS
 
 typedef enum {
     SC_BRDF_LAMBERT,
@@ -106,5 +109,7 @@ int sc_brdf_check_range(sc_prec p, const sc_brdf *b, char *msg, size_t size);
 const char *sc_brdf_kind_name(sc_brdf_kind kind);
 /* The name of form `form` of a model ("normalized"), or NULL past the last. */
 const char *sc_brdf_form_name(sc_brdf_kind kind, int form);
+
+SC_END_DECLS
 
 #endif

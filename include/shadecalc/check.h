@@ -22,7 +22,10 @@
 #ifndef SHADECALC_CHECK_H
 #define SHADECALC_CHECK_H
 
+#include "shadecalc/api.h"
 #include "shadecalc/brdf.h"
+
+SC_BEGIN_DECLS
 
 typedef struct {
     double albedo[3]; /* per colour channel */
@@ -36,5 +39,7 @@ int sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result 
 /* The worst relative reciprocity error over θ in {0, 10, …, 80, 89}° × φ in {0, 45, …, 315}°
  * for both directions; *worst_l, *worst_v (may be NULL) get the pair (unit vectors). */
 double sc_reciprocity_error(const sc_brdf *b, double worst_l[3], double worst_v[3]);
+
+SC_END_DECLS
 
 #endif

@@ -26,7 +26,10 @@
 #ifndef SHADECALC_EXPR_H
 #define SHADECALC_EXPR_H
 
+#include "shadecalc/api.h"
 #include "shadecalc/precision.h"
+
+SC_BEGIN_DECLS
 
 typedef enum { SC_FLOAT, SC_VEC2, SC_VEC3, SC_VEC4, SC_MAT2, SC_MAT3, SC_MAT4 } sc_type;
 
@@ -88,5 +91,7 @@ typedef struct {
  * says. No domain callback: evaluate with sc_expr_eval to hear about domain errors. NaN values
  * and derivatives if out of memory. Thread-safe: e is not modified. */
 sc_dual_value sc_expr_eval_dual(const sc_expr *e, const sc_dual_value *inputs);
+
+SC_END_DECLS
 
 #endif

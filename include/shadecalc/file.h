@@ -35,6 +35,10 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 typedef struct sc_atomic_file sc_atomic_file;
 
 /* Opens path for writing as above; NULL with err ("PATH: reason") on failure (missing
@@ -67,5 +71,7 @@ void sc_atomic_allow_read_only(int allow);
  * Also ignores SIGXFSZ, so that a write beyond `ulimit -f` fails with EFBIG and removes its
  * temporary. Call it once at program start; 0, or -1 with errno. */
 int sc_atomic_remove_on_signals(void);
+
+SC_END_DECLS
 
 #endif

@@ -9,15 +9,20 @@
  *
  * Semantics are GLSL ES 3.00 §8 (SPEC §9): mod(x,y) = x - y*floor(x/y) takes the sign of y;
  * sign(±0) = 0; step(e,e) = 1; clamp = min(max(x,lo),hi). Where GLSL ES leaves an input
- * undefined, each function returns the IEEE result of its formula and says which in its
- * comment.
+ * undefined, each function returns the IEEE result of its formula: shadecalc(3), section
+ * SPECIAL VALUES, lists them.
  *
- * Each transcendental states its worst-case error against the double-precision reference over
- * a stated domain in its source file's first comment; tests/unit/test_math_accuracy.c checks
- * every stated bound on >= 10^6 inputs.
+ * Each transcendental has a stated worst-case error against the double-precision reference
+ * over a stated domain: the manual page shadecalc(3), section ACCURACY, lists them, and
+ * sc_accuracy_table (shadecalc/accuracy.h) holds them at run time; the tests check every
+ * stated bound on >= 10^6 inputs.
  */
 #ifndef SHADECALC_GLSL_H
 #define SHADECALC_GLSL_H
+
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
 
 float sc_radiansf(float degrees);
 float sc_degreesf(float radians);
@@ -49,5 +54,7 @@ float sc_clampf(float x, float lo, float hi);
 float sc_mixf(float x, float y, float a);
 float sc_stepf(float edge, float x);
 float sc_smoothstepf(float edge0, float edge1, float x);
+
+SC_END_DECLS
 
 #endif

@@ -34,6 +34,10 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 enum { SC_IMAGE_MAX_CHANNELS = 16 };
 #define SC_EXR_MAX_VALUES ((size_t)1 << 28)
 
@@ -103,5 +107,7 @@ int sc_exr_read_memory(const void *bytes, size_t size, const char *name, sc_imag
                        sc_image_attr **attrs, int *n_attrs, char *err, size_t errsize);
 
 void sc_image_attrs_free(sc_image_attr *attrs, int n);
+
+SC_END_DECLS
 
 #endif

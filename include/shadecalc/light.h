@@ -25,7 +25,10 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/precision.h"
+
+SC_BEGIN_DECLS
 
 typedef enum {
     SC_ATTEN_NONE,
@@ -112,5 +115,7 @@ int sc_params_in_range(sc_prec p, const sc_param *params, int count, char *msg, 
  * (intensity and colours, pos, dir, attenuation and spot parameters; range, cutoff and the
  * cone angles are compared in double). */
 int sc_light_check_range(sc_prec p, const sc_light *light, char *msg, size_t size);
+
+SC_END_DECLS
 
 #endif

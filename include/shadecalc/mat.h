@@ -51,7 +51,10 @@
 #ifndef SHADECALC_MAT_H
 #define SHADECALC_MAT_H
 
+#include "shadecalc/api.h"
 #include "shadecalc/vec.h"
+
+SC_BEGIN_DECLS
 
 typedef struct {
     float m[4];
@@ -78,7 +81,7 @@ typedef struct {
 // clang-format on
 #define SC_MAT_DEFINE_MUL_VEC(T, V, EACH, ROW)                                                     \
     static inline V T##_mul_vec(T m, V v) {                                                        \
-        return (V){EACH(ROW)};                                                                     \
+        return SC_LITERAL_(V){EACH(ROW)};                                                          \
     }
 SC_MAT_DEFINE_MUL_VEC(sc_mat2, sc_vec2, SC_EACH2, SC_MAT_ROW2_)
 SC_MAT_DEFINE_MUL_VEC(sc_mat3, sc_vec3, SC_EACH3, SC_MAT_ROW3_)
@@ -131,5 +134,7 @@ sc_dmat4 sc_dmat4_rotate(double deg, double ax, double ay, double az);
 int sc_dmat4_look_at(sc_dvec3 eye, sc_dvec3 center, sc_dvec3 up, sc_dmat4 *out);
 int sc_dmat4_perspective(double fovy_deg, double aspect, double znear, double zfar, sc_dmat4 *out);
 int sc_dmat3_normal_matrix(const sc_dmat4 *m, sc_dmat3 *out);
+
+SC_END_DECLS
 
 #endif

@@ -44,7 +44,10 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/surface.h"
+
+SC_BEGIN_DECLS
 
 typedef struct {
     int n_vertices, n_triangles;
@@ -77,5 +80,7 @@ void sc_triangle_normal(const double a[3], const double b[3], const double c[3],
  * memory runs out. */
 int sc_obj_read(const char *path, sc_mesh *out, char *err, size_t errsize);
 int sc_obj_write(const char *path, const sc_mesh *m, char *err, size_t errsize); /* atomic */
+
+SC_END_DECLS
 
 #endif

@@ -29,6 +29,10 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 typedef struct {
     const char *label; /* legend text; NULL for a curve without a legend entry */
     const double *x, *y;
@@ -77,5 +81,7 @@ typedef struct {
  * axes, and a colour bar labelled in the values' units. 0, or -1 if writing failed or a range
  * is empty. */
 int sc_plot_write_heatmap_svg(FILE *out, const sc_heatmap *h);
+
+SC_END_DECLS
 
 #endif

@@ -34,7 +34,10 @@
 #ifndef SHADECALC_PMATH_H
 #define SHADECALC_PMATH_H
 
+#include "shadecalc/api.h"
 #include "shadecalc/precision.h"
+
+SC_BEGIN_DECLS
 
 double sc_p_add(sc_prec p, double a, double b);
 double sc_p_sub(sc_prec p, double a, double b);
@@ -94,5 +97,7 @@ double sc_p_determinant(sc_prec p, const double *m, int n);
 /* Writes adjugate(m)/det(m) and returns det(m) (a zero determinant gives ±Inf/NaN entries:
  * GLSL leaves the inverse of a singular matrix undefined). */
 double sc_p_inverse(sc_prec p, const double *m, int n, double *out);
+
+SC_END_DECLS
 
 #endif

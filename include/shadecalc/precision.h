@@ -26,6 +26,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 typedef enum { SC_DOUBLE, SC_HIGHP, SC_MEDIUMP, SC_LOWP } sc_prec;
 
 /* Parses a precision name; returns 0 on success, -1 on an unknown name. */
@@ -58,5 +62,7 @@ int sc_format_shortest(char *buf, size_t size, double x, sc_prec p);
  * 0x%08x (binary32), mediump 0x%04x (binary16), lowp 0x%04x (the 16-bit two's complement of
  * x·2^8). Returns the length (as snprintf). */
 int sc_format_bits(char *buf, size_t size, double x, sc_prec p);
+
+SC_END_DECLS
 
 #endif

@@ -32,10 +32,13 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/image.h"
 #include "shadecalc/mesh.h"
 #include "shadecalc/shade.h"
 #include "shadecalc/surface.h"
+
+SC_BEGIN_DECLS
 
 /* At most this many pixels (e.g. 8192 × 4096) and this many per side. */
 #define SC_RENDER_MAX_PIXELS ((long)1 << 25)
@@ -109,5 +112,7 @@ typedef struct {
  * where ref is empty. The sizes must match. */
 void sc_render_compare(const sc_framebuffer *img, const sc_framebuffer *ref, float *map,
                        sc_render_error *out);
+
+SC_END_DECLS
 
 #endif

@@ -16,7 +16,10 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/shade.h"
+
+SC_BEGIN_DECLS
 
 /* Returns 0; or 1 when the spec is valid but a key has no effect under its other choices, with
  * the warning in err ("light spot: inner= has no effect with spot=opengl"); or -1 with the error
@@ -29,5 +32,7 @@ int sc_model_parse(const char *spec, sc_model *out, char *err, size_t size);
 /* 0 on success; -1 if s is not what it should be. */
 int sc_parse_colour(const char *s, double out[3]);
 int sc_parse_vector3(const char *s, double out[3]);
+
+SC_END_DECLS
 
 #endif

@@ -24,8 +24,11 @@
 #ifndef SHADECALC_SHADE_H
 #define SHADECALC_SHADE_H
 
+#include "shadecalc/api.h"
 #include "shadecalc/brdf.h"
 #include "shadecalc/light.h"
+
+SC_BEGIN_DECLS
 
 typedef enum { SC_MODEL_BRDF, SC_MODEL_ADS, SC_MODEL_OPENGL, SC_MODEL_D3D9 } sc_model_kind;
 typedef enum { SC_ADS_LAMBERT, SC_ADS_PHONG, SC_ADS_BLINN_PHONG } sc_ads_form;
@@ -76,5 +79,7 @@ typedef struct {
 void sc_model_init(sc_model *m, sc_model_kind kind);
 
 void sc_shade(sc_prec p, const sc_scene *scene, const sc_shade_point *at, sc_shade_result *out);
+
+SC_END_DECLS
 
 #endif

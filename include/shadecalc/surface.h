@@ -38,6 +38,10 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
+
+SC_BEGIN_DECLS
+
 typedef struct sc_surface sc_surface;
 
 /* Parses a surface spec (above). NULL with a message naming the offending word in err. */
@@ -55,5 +59,7 @@ void sc_surface_eval(const sc_surface *s, double u, double v, sc_surface_point *
 /* Whether the surface is closed in u and/or v (for seams when tessellating). */
 int sc_surface_closed_u(const sc_surface *s);
 int sc_surface_closed_v(const sc_surface *s);
+
+SC_END_DECLS
 
 #endif

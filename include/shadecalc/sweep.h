@@ -37,8 +37,11 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/image.h"
 #include "shadecalc/precision.h"
+
+SC_BEGIN_DECLS
 
 enum { SC_SWEEP_NAME_MAX = 32, SC_SWEEP_MAX_VARS = 8 };
 #define SC_SWEEP_MAX_ROWS 4503599627370496.0 /* 2^52 */
@@ -156,5 +159,7 @@ void sc_sweep_image_store(sc_image *img, uint64_t row, const double *results);
  * atomically. 0, or -1 with err "PATH: reason". */
 int sc_sweep_image_write(const char *path, const sc_image *img, sc_pixel_type type,
                          const sc_sweep_grid *g, const char *command, char *err, size_t errsize);
+
+SC_END_DECLS
 
 #endif

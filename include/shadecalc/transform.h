@@ -21,12 +21,17 @@
 
 #include <stddef.h>
 
+#include "shadecalc/api.h"
 #include "shadecalc/mat.h"
+
+SC_BEGIN_DECLS
 
 /* 0, or -1 with a message naming the offending factor or number in err. */
 int sc_transform_parse(const char *spec, sc_dmat4 *out, char *err, size_t errsize);
 
 /* 0 with *rigid = 1 if the shortcut applied (else 0); -1 if M₃ is singular. */
 int sc_normal_matrix(const sc_dmat4 *m, sc_dmat3 *out, int *rigid);
+
+SC_END_DECLS
 
 #endif
