@@ -23,7 +23,7 @@ step eval --precision mediump --ulp 'exp2(10.3)'
 step eval --hex 'pow(2.0, 0.5)'
 step eval --format json 'mat2(1,2,3,4) * vec2(1,1)'
 
-echo; echo "== One shading value, every intermediate (SPEC 6) =="
+echo; echo "== One shading value, every intermediate (docs/formulas.md §6) =="
 step shade --explain --light 'spot pos=0,4,0 dir=0,-1,0 I=50 spot=directx inner=20 outer=30 exp=1' \
     --light 'point pos=3,3,0 I=20 atten=pixar fmax=2 fc=1 rc=1 se=2' \
     --brdf 'cook-torrance diff=0.5,0.1,0.1 amb=0.5,0.1,0.1 f0=0.04 alpha=0.3 D=ggx G=smith F=schlick' \
@@ -39,7 +39,7 @@ step check --theta 0,30,60,85,89.9 --brdf 'blinn-phong diff=0 spec=1 m=8.8' \
     --brdf 'ward form=duer diff=0 spec=1 alpha=0.2' --brdf 'ward form=gmd diff=0 spec=1 alpha=0.2' \
     --brdf 'phong form=original diff=0 spec=1 m=10'
 
-echo; echo "== Gouraud or Phong, how many triangles? Error against the exact sphere (SPEC 8) =="
+echo; echo "== Gouraud or Phong, how many triangles? Error against the exact sphere (docs/formulas.md §8) =="
 compare_dir=$(dirname "$bin")/compare
 mkdir -p "$compare_dir"
 step render --compare --size 256x256 --output-dir "$compare_dir"

@@ -265,7 +265,7 @@ int sc_dmat4_perspective(double fovy_deg, double aspect, double znear, double zf
     return 0;
 }
 
-/* SPEC §7: R = (M3⁻¹)ᵀ, M3 the upper-left 3×3 of M. */
+/* docs/formulas.md §7: R = (M3⁻¹)ᵀ, M3 the upper-left 3×3 of M. */
 int sc_dmat3_normal_matrix(const sc_dmat4 *m, sc_dmat3 *out) {
     sc_dmat3 m3, inv;
     upper_left_d(m->m, m3.m);

@@ -1,4 +1,4 @@
-/* Precision emulation: binary16 and lowp rounding, ULP measure, shortest decimals (SPEC §9). */
+/* Precision emulation: binary16 and lowp rounding, ULP measure, shortest decimals (docs/formulas.md §9). */
 #include "shadecalc/precision.h"
 
 #include <float.h>

@@ -57,7 +57,7 @@ typedef enum { SC_BATCH_DIRECTIONAL, SC_BATCH_POINT, SC_BATCH_SPOT } sc_batch_li
 typedef enum { SC_BATCH_SPOT_OPENGL, SC_BATCH_SPOT_DIRECTX, SC_BATCH_SPOT_SMOOTHSTEP } sc_batch_spot;
 
 /* A light as light.h computes it: directional (E_L), point and spot (I_L with inverse-square
- * falloff 1/max(r², 10^-4); at r = 0, l = n). Spot factor of cos θ_s = −l·dir (SPEC §4):
+ * falloff 1/max(r², 10^-4); at r = 0, l = n). Spot factor of cos θ_s = −l·dir (docs/formulas.md §4):
  * opengl cos_s^exponent where cos θ_s >= cos_outer (cos_outer <= −1: a cutoff of 180°, factor
  * 1); directx and smoothstep 1 inside cos_inner, 0 outside cos_outer, between them the ramp
  * t = (cos θ_s − cos_outer)/(cos_inner − cos_outer) to the exponent, or t²(3 − 2t). */
@@ -72,7 +72,7 @@ typedef struct {
 
 typedef enum { SC_BATCH_LAMBERT, SC_BATCH_BLINN_PHONG, SC_BATCH_GGX } sc_batch_brdf;
 
-/* The shading equation of SPEC §6 with one BRDF, L = c_amb ⊙ L_A + Σ_k f(l_k, v) ⊙ E_k cos θ_i:
+/* The shading equation of docs/formulas.md §6 with one BRDF, L = c_amb ⊙ L_A + Σ_k f(l_k, v) ⊙ E_k cos θ_i:
  * lambert c_diff/π; blinn-phong (normalized) c_diff/π + c_spec (m+8)/(8π) (n·h)^m, m >= 1;
  * ggx c_diff/π + c_spec D_GGX V_Smith-correlated F_Schlick(f0) (the cook-torrance model of
  * brdf.h with D=ggx G=smith-correlated F=schlick). f = 0 where n·l <= 0 or n·v <= 0; a point
@@ -96,7 +96,7 @@ const char *sc_batch_brdf_name(sc_batch_brdf brdf);
 
 /* ---- light function and BRDF parameters ---- */
 
-/* atten_<function> (SPEC §3, light.h): each kernel reads the fields of its function. */
+/* atten_<function> (docs/formulas.md §3, light.h): each kernel reads the fields of its function. */
 typedef struct {
     float sc, sl, sq;           /* clq: 1 / max(s_c + s_l r + s_q r², 10^-4) */
     float r_start, r_end;       /* window: 0 <= r_start <= r_end (equal: a step) */
@@ -104,14 +104,14 @@ typedef struct {
     float r_max;                /* windowed inverse-square: r_max > 0 */
 } sc_batch_atten_params;
 
-/* spot_<function> (SPEC §4), angles in degrees. */
+/* spot_<function> (docs/formulas.md §4), angles in degrees. */
 typedef struct {
     float exponent;     /* opengl, directx: >= 0 */
     float cutoff;       /* opengl: 0..90, or 180 (no cone) */
     float inner, outer; /* directx, smoothstep: 0 <= inner <= outer <= 180 */
 } sc_batch_spot_params;
 
-/* brdf (SPEC §6, brdf.h), isotropic: one roughness α for Ward and Cook–Torrance. */
+/* brdf (docs/formulas.md §6, brdf.h), isotropic: one roughness α for Ward and Cook–Torrance. */
 typedef struct {
     int model;                     /* sc_brdf_kind (brdf.h); out of range: lambert */
     int form;                      /* the model's variant: SC_PHONG_*, SC_BLINN_*, SC_WARD_*,

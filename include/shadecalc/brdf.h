@@ -1,5 +1,5 @@
 /*
- * shadecalc/brdf.h — the BRDFs of the lecture and their variants (SPEC §6; reference §6–§11).
+ * shadecalc/brdf.h — the BRDFs of the lecture and their variants (docs/formulas.md §6; §6.1–§6.6).
  *
  *   sc_brdf, sc_brdf_init      a model, its variant (form) and parameters
  *   sc_brdf_eval               f(l, v) as RGB, with its terms (diffuse, specular, D, F, G)
@@ -7,7 +7,7 @@
  *   sc_brdf_validate           the parameter domains, as a message
  *   sc_brdf_kind_name, sc_brdf_form_name
  *
- * f never contains cos θ_i (reference §0). f is 0 when l or v is below the horizon
+ * f never contains cos θ_i (docs/formulas.md §1). f is 0 when l or v is below the horizon
  * (n·l <= 0 or n·v <= 0). Directions are unit vectors toward the light (l) and the viewer (v).
  *
  * Models and forms (diffuse part c_diff/π unless noted; m the exponent):
@@ -24,7 +24,7 @@
  *                D beckmann|ggx, G cook-torrance|smith|smith-correlated, F schlick|exact|none
  *
  * Guards (each documented in the man page): divisions by cos θ_i, cos θ_o take them at least
- * 1e-6; α is at least 1e-4 (pbrt); h = n when l = −v (SPEC §1); pow(0, 0) = 1; Ward's exponent
+ * 1e-6; α is at least 1e-4 (pbrt); h = n when l = −v (docs/formulas.md §1); pow(0, 0) = 1; Ward's exponent
  * is evaluated first so that exp(−∞) = 0 never meets an infinite prefactor.
  */
 #ifndef SHADECALC_BRDF_H
@@ -62,7 +62,7 @@ typedef struct {
     int form;
     double diff[3];  /* c_diff, ρ_d; oren-nayar: ρ */
     double spec[3];  /* c_spec, ρ_s */
-    double amb[3];   /* c_amb, the material's ambient colour (SPEC §6) */
+    double amb[3];   /* c_amb, the material's ambient colour (docs/formulas.md §6) */
     double m;        /* phong and blinn-phong exponent */
     double ax, ay;   /* roughness α (ward, cook-torrance); ax = ay when isotropic */
     double sigma;    /* oren-nayar σ in radians */

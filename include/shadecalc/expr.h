@@ -20,7 +20,7 @@
  *
  * Evaluation rounds every literal, operation and built-in result to the precision
  * (shadecalc/pmath.h), so `highp` reproduces binary32 evaluation in source order and `double`
- * is the reference. Arguments outside a built-in's GLSL ES domain (SPEC §9) give the IEEE result
+ * is the reference. Arguments outside a built-in's GLSL ES domain (docs/formulas.md §9) give the IEEE result
  * of the formula and are reported through the domain callback.
  */
 #ifndef SHADECALC_EXPR_H

@@ -7,7 +7,7 @@
  * common                   sc_absf sc_signf sc_floorf sc_ceilf sc_fractf sc_modf sc_minf sc_maxf
  *                          sc_clampf sc_mixf sc_stepf sc_smoothstepf
  *
- * Semantics are GLSL ES 3.00 §8 (SPEC §9): mod(x,y) = x - y*floor(x/y) takes the sign of y;
+ * Semantics are GLSL ES 3.00 §8 (docs/formulas.md §9): mod(x,y) = x - y*floor(x/y) takes the sign of y;
  * sign(±0) = 0; step(e,e) = 1; clamp = min(max(x,lo),hi). Where GLSL ES leaves an input
  * undefined, each function returns the IEEE result of its formula: shadecalc(3), section
  * SPECIAL VALUES, lists them.

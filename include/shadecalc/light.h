@@ -1,22 +1,22 @@
 /*
- * shadecalc/light.h — light sources, distance attenuation and spotlight functions (SPEC §2–§4).
+ * shadecalc/light.h — light sources, distance attenuation and spotlight functions (docs/formulas.md §2–§4).
  *
  *   sc_atten, sc_atten_eval        f_d(r): none, inverse-square, clq, window, pixar,
  *                                  windowed inverse-square (UE4/Filament)
  *   sc_spot, sc_spot_eval          I_L(l)/I_Lmax from cos θ_s: opengl, directx, smoothstep (pbrt)
  *   sc_light, sc_light_eval        l and E_L at a surface point: directional, point, spot
- *   sc_light_validate              the parameter domains of SPEC §3–§4, as a message
+ *   sc_light_validate              the parameter domains of docs/formulas.md §3–§4, as a message
  *
  * Every function takes the precision p (shadecalc/precision.h): SC_DOUBLE is the reference;
  * in highp and mediump each named intermediate quantity is rounded to the precision and the
  * transcendental functions are the precision's built-ins (shadecalc/pmath.h).
  *
- * Edges (SPEC §3): denominators of inverse-square and clq below 1e-4 are raised to 1e-4
+ * Edges (docs/formulas.md §3): denominators of inverse-square and clq below 1e-4 are raised to 1e-4
  * (Filament's ε², so r = 0 is finite), and where they overflow the precision they are formed in
  * double (1/r² of highp r = 1e20 is 1e-40, not 0); distances and directions are scaled by a
  * power of two where their squared length would overflow or underflow; window with r_start = r_end is a step (1 for
  * r <= r_start); pixar with f_c = f_max is the constant f_max inside r_c; a point on a point or
- * spot light (r = 0) takes l = n. Spot (SPEC §4): opengl is 1 for cutoff 180°, else
+ * spot light (r = 0) takes l = n. Spot (docs/formulas.md §4): opengl is 1 for cutoff 180°, else
  * max(cos θ_s, 0)^exp inside the inclusive cone; directx and smoothstep with inner = outer are
  * a hard edge at the cone (1 inside, inclusive). pow(0, 0) is 1 throughout.
  */
@@ -64,7 +64,7 @@ typedef struct {
     double pos[3];       /* point, spot */
     double intensity[3]; /* directional: E_L; point: I_L; spot: I_Lmax */
     /* Colours of the legacy models (ads, opengl, direct3d9): per-light ambient L_A,k (also used
-     * by the SPEC §6 equation), diffuse and specular colours. */
+     * by the docs/formulas.md §6 equation), diffuse and specular colours. */
     double ambient[3], diffuse[3], specular[3];
     double range; /* direct3d9: no light beyond this distance (default +Inf) */
     sc_atten atten;
@@ -96,7 +96,7 @@ void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const 
  * shading equation never makes 0·∞ = NaN of an overflowed intensity. */
 double sc_mul_reach(sc_prec p, double a, double b);
 
-/* 0 if the parameters are inside their domains (SPEC §3–§4), else -1 with a message naming the
+/* 0 if the parameters are inside their domains (docs/formulas.md §3–§4), else -1 with a message naming the
  * key and its valid range ("cutoff=120: spot=opengl takes 0..90 or 180"). */
 int sc_light_validate(const sc_light *light, char *msg, size_t size);
 

@@ -1,6 +1,6 @@
 /*
  * shadecalc/mat.h — small square matrices, column-major as in GLSL, and the transforms of the
- * renderer and the normal matrix (SPEC §7).
+ * renderer and the normal matrix (docs/formulas.md §7).
  *
  *   types     sc_mat2 {float m[4]}  sc_mat3 {float m[9]}  sc_mat4 {float m[16]}
  *             sc_dmat3 {double m[9]}  sc_dmat4 {double m[16]}
@@ -31,7 +31,7 @@
  *   int sc_dmat4_perspective(fovy_deg, aspect, znear, zfar, sc_dmat4 *out)   gluPerspective;
  *            −1 unless 0 < fovy < 180, aspect > 0, 0 < znear < zfar, all finite
  *   int sc_dmat3_normal_matrix(const sc_dmat4 *m, sc_dmat3 *out)   transpose(inverse(upper-left
- *            3×3 of m)) (SPEC §7); −1 if that 3×3 is singular
+ *            3×3 of m)) (docs/formulas.md §7); −1 if that 3×3 is singular
  *
  * Arithmetic (the order of shadecalc/pmath.h, so float results equal `shadecalc eval` highp):
  * products sum over k left to right, each operation rounded to S; the determinant is the

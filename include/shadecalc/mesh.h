@@ -1,6 +1,6 @@
 /*
  * shadecalc/mesh.h — triangle meshes: tessellated surfaces, face and vertex normals, OBJ files
- * (SPEC §7).
+ * (docs/formulas.md §7).
  *
  *   sc_mesh                  positions, optional normals and (u,v), triangles (CCW outside)
  *   sc_mesh_free
@@ -19,7 +19,7 @@
  * column that collapses to one point (a pole) gets one position and loses the triangles
  * that would have zero area, so a sphere of 2·nu·nv has 2·nu·(nv − 1) triangles.
  *
- * Vertex normals (SPEC §7: the normalized sum of the adjacent face normals): PLAIN sums the
+ * Vertex normals (docs/formulas.md §7: the normalized sum of the adjacent face normals): PLAIN sums the
  * unit face normals (the lecture's (n12 + n23 + n34 + n41)/‖…‖), AREA the unnormalized
  * (P2 − P1) × (P3 − P1) (twice the area times the unit normal), ANGLE the unit normals times
  * the face's angle at the vertex (Thürmer & Wüthrich 1998). A triangle is degenerate when

@@ -1,5 +1,5 @@
 /*
- * shadecalc/pmath.h — the GLSL ES built-ins and arithmetic in a chosen precision (SPEC §9).
+ * shadecalc/pmath.h — the GLSL ES built-ins and arithmetic in a chosen precision (docs/formulas.md §9).
  *
  * Values travel as doubles that are already representable in the precision p. Each function
  * returns its result rounded to p:

@@ -1,5 +1,5 @@
 /*
- * shadecalc/precision.h — the GLSL ES precision qualifiers, emulated (SPEC §9).
+ * shadecalc/precision.h — the GLSL ES precision qualifiers, emulated (docs/formulas.md §9).
  *
  *   sc_prec                 SC_DOUBLE (the reference), SC_HIGHP (binary32),
  *                           SC_MEDIUMP (binary16, emulated), SC_LOWP (8-bit-fraction fixed point)

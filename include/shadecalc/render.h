@@ -1,6 +1,6 @@
 /*
  * shadecalc/render.h — a software rasterizer: meshes of parametric surfaces drawn with flat,
- * Gouraud, Phong or exact per-pixel shading, and the error of each against the exact (SPEC §8).
+ * Gouraud, Phong or exact per-pixel shading, and the error of each against the exact (docs/formulas.md §8).
  *
  *   sc_camera, sc_camera_fit       perspective camera (eye, at, up, vertical field of view);
  *                                  a camera that frames a mesh

@@ -1,13 +1,13 @@
 /*
- * shadecalc/shade.h — the shading equation (SPEC §6) and the fixed-function equations of
- * legacy APIs (reference §3–§4), for any number of lights.
+ * shadecalc/shade.h — the shading equation (docs/formulas.md §6) and the fixed-function equations of
+ * legacy APIs (docs/formulas.md §6.8), for any number of lights.
  *
- *   sc_model                what is evaluated at a point: a BRDF in the SPEC §6 equation, the
+ *   sc_model                what is evaluated at a point: a BRDF in the docs/formulas.md §6 equation, the
  *                           shader-literature ADS forms, OpenGL 1.x or Direct3D 9 lighting
  *   sc_scene                lights, a model, the global ambient L_A
  *   sc_shade                L_o at a point, with every intermediate per light (for --explain)
  *
- * SPEC §6:  L_o = c_amb ⊙ L_A + Σ_k [ c_amb ⊙ L_A,k + f(l_k, v) ⊙ E_L,k · cos̄θ_i,k ]
+ * docs/formulas.md §6:  L_o = c_amb ⊙ L_A + Σ_k [ c_amb ⊙ L_A,k + f(l_k, v) ⊙ E_L,k · cos̄θ_i,k ]
  * ads:      L_o = k_a ⊙ (L_A + Σ_k L_A,k) + Σ_k att·spot·[ I⊙c_d,k ⊙ k_d (n·l)⁺ + I⊙c_s,k ⊙ k_s S ]
  *           with S = 0, (r·v)⁺^m or (n·h)⁺^m for the lambert, phong and blinn-phong forms and
  *           k_d, k_s, k_a, m the model's diff, spec, amb, m (the lecture's shader form: light

@@ -1,5 +1,5 @@
 /*
- * shadecalc/surface.h — parametric surfaces S(u,v) and their exact normals (SPEC §7).
+ * shadecalc/surface.h — parametric surfaces S(u,v) and their exact normals (docs/formulas.md §7).
  *
  *   sc_surface               an opaque surface: sphere, torus, plane, cylinder or user S(u,v)
  *   sc_surface_parse         "sphere r=1" ... -> surface; NULL with err on a bad spec

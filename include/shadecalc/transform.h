@@ -1,5 +1,5 @@
 /*
- * shadecalc/transform.h — 4×4 transforms written as text, and the normal matrix (SPEC §7).
+ * shadecalc/transform.h — 4×4 transforms written as text, and the normal matrix (docs/formulas.md §7).
  *
  *   sc_transform_parse   "scale(1,2,3)*rotate(30,0,1,0)*translate(1,2,3)", or 16 numbers
  *                        separated by commas (column-major, as GLSL's mat4(...)) -> sc_dmat4

@@ -108,7 +108,7 @@ int sc_frame_make(const double n[3], const double *tangent, sc_frame *out)
 
 /* ---- evaluation ---- */
 
-/* h = (l + v)/‖l + v‖, or n when l = −v (SPEC §1). */
+/* h = (l + v)/‖l + v‖, or n when l = −v (docs/formulas.md §1). */
 static void half_vector(sc_prec p, const brdf_geometry *g, double h[3])
 {
     double sum[3];

@@ -1,4 +1,4 @@
-/* Cook–Torrance microfacet specular (reference §11): D·F·G / (4 cos θ_i cos θ_o) in the
+/* Cook–Torrance microfacet specular (docs/formulas.md §6.6): D·F·G / (4 cos θ_i cos θ_o) in the
  * normalization of Walter et al. 2007; the form printed by Cook and Torrance (1982),
  * F·D_CT·G/(π cos θ_i cos θ_o) with D_CT = π·D_Beckmann, is 4× that. */
 #include <math.h>
@@ -20,7 +20,7 @@ static double alpha2_tan2(sc_prec p, const sc_frame *f, const double w[3], rough
 }
 
 /* The slope terms (h·t/α_x)² + (h·b/α_y)², which are tan²θ_h·(…)·cos²θ_h without the
- * cancellation of 1 − (n·h)² near the highlight (reference §11 pitfalls). */
+ * cancellation of 1 − (n·h)² near the highlight (docs/formulas.md §6.6 pitfalls). */
 static double slope2(sc_prec p, const sc_frame *f, const double h[3], roughness a)
 {
     double ht = Q(sc_p_dot(p, h, f->t, 3) / a.ax), hb = Q(sc_p_dot(p, h, f->b, 3) / a.ay);

@@ -1,4 +1,4 @@
-/* Oren–Nayar (1994) rough diffuse reflection, qualitative and full models (reference §10).
+/* Oren–Nayar (1994) rough diffuse reflection, qualitative and full models (docs/formulas.md §6.5).
  * σ is the slope-angle standard deviation in radians, α = max(θ_i, θ_o), β = min(θ_i, θ_o),
  * Δφ the azimuth difference (cos Δφ = 0 where a direction is along n, so the Δφ terms
  * vanish there instead of becoming 0/0). The full model's direct term is clamped at 0, where

@@ -1,4 +1,4 @@
-/* Phong (1975) and Blinn-Phong (1977) BRDFs and their normalizations (reference §7–§8). */
+/* Phong (1975) and Blinn-Phong (1977) BRDFs and their normalizations (docs/formulas.md §6.2–§6.3). */
 #include "brdf/brdf_internal.h"
 
 static void add_diffuse(sc_prec p, const sc_brdf *b, sc_brdf_terms *out)

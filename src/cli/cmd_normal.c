@@ -1,5 +1,5 @@
 /* shadecalc normal — surface normals (exact, by automatic differentiation for user surfaces),
- * triangle normals and the normal matrix (SPEC §7). */
+ * triangle normals and the normal matrix (docs/formulas.md §7). */
 #include <getopt.h>
 #include <math.h>
 #include <stdlib.h>

@@ -1,6 +1,6 @@
 /* shadecalc render — rasterize a tessellated surface or an OBJ mesh with flat, Gouraud, Phong or
  * exact shading into an EXR, or the lecture's Gouraud/Phong comparison with its errors
- * (SPEC §8). */
+ * (docs/formulas.md §8). */
 #include <errno.h>
 #include <getopt.h>
 #include <math.h>

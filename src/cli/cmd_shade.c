@@ -1,4 +1,4 @@
-/* shadecalc shade — one value of the shading equation (SPEC §6) from the shell. */
+/* shadecalc shade — one value of the shading equation (docs/formulas.md §6) from the shell. */
 #include <getopt.h>
 #include <math.h>
 #include <stdlib.h>

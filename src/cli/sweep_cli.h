@@ -50,7 +50,7 @@ typedef struct {
 int sweep_expr_plan(const char *src, const sc_sweep_grid *g, sc_prec p, int threads,
                     sweep_plan *plan);
 /* A shading setup: with lights, L_o (r,g,b); with a BRDF and no light, f(l, v) (r,g,b).
- * theta_i phi_i theta_o phi_o (degrees) place l and v (reference §0). */
+ * theta_i phi_i theta_o phi_o (degrees) place l and v (docs/formulas.md §1). */
 int sweep_shade_plan(const sweep_setup_args *a, const sc_sweep_grid *g, sc_prec p, int threads,
                      sweep_plan *plan);
 

@@ -1,11 +1,11 @@
 /* shadecalc sweep over a shading setup: `$name` in --light and --brdf specs, and the angles
- * theta_i phi_i theta_o phi_o placing l and v about n (reference §0:
+ * theta_i phi_i theta_o phi_o placing l and v about n (docs/formulas.md §1:
  * dir(θ, φ) = sinθ cosφ t + sinθ sinφ b + cosθ n, in degrees), or the half-vector angles
  * theta_h phi_h theta_d phi_d (Rusinkiewicz 1998, BRDF Explorer's image slice):
  * h = dir(θ_h, φ_h), and l, v = R_z(φ_h) R_y(θ_h) dir(θ_d, φ_d), dir(θ_d, φ_d + 180°); phi_h
  * defaults to 0, phi_d to 90° (as in BRDF Explorer).
  *
- * With lights, a row is L_o of the shading equation (SPEC §6), as `shadecalc shade` computes
+ * With lights, a row is L_o of the shading equation (docs/formulas.md §6), as `shadecalc shade` computes
  * it; theta_i and phi_i set the direction of every directional light, theta_o and phi_o the
  * viewer. With a BRDF and no light, a row is f(l, v) itself (no cos θ_i), as BRDF Explorer
  * plots it. phi_o defaults to phi_i (the plane of incidence), phi_i to 0; without theta_o or

@@ -33,7 +33,7 @@ typedef struct {
     eval_fn eval;
 } builtin;
 
-/* ---- GLSL ES domains (SPEC §9: undefined inputs) ---- */
+/* ---- GLSL ES domains (docs/formulas.md §9: undefined inputs) ---- */
 
 static const char *log_domain(const double *a) { return a[0] <= 0.0 ? "x <= 0" : NULL; }
 static const char *sqrt_domain(const double *a) { return a[0] < 0.0 ? "x < 0" : NULL; }

@@ -1,5 +1,5 @@
 /* Triangle normals and per-vertex normals by plain, area- or angle-weighted averaging of the
- * adjacent face normals (shadecalc/mesh.h, SPEC §7). All sums in double. */
+ * adjacent face normals (shadecalc/mesh.h, docs/formulas.md §7). All sums in double. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -28,7 +28,7 @@ static int edge_cross(sc_dvec3 e1, sc_dvec3 e2, sc_dvec3 *cross)
     return !(len > 4.0 * 0x1p-53 * sc_dvec3_length(e1) * sc_dvec3_length(e2)) || !isfinite(len);
 }
 
-/* (b − a) × (c − a) (SPEC §7) of a mesh's float positions: in double it neither overflows nor
+/* (b − a) × (c − a) (docs/formulas.md §7) of a mesh's float positions: in double it neither overflows nor
  * underflows (|x| <= 3.4e38 and >= 1.4e-45), and its length is the area weight. */
 static int face_cross(sc_dvec3 a, sc_dvec3 b, sc_dvec3 c, sc_dvec3 *cross)
 {

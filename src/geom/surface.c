@@ -1,4 +1,4 @@
-/* Parametric surfaces and their exact normals (shadecalc/surface.h, SPEC §7): the built-ins in
+/* Parametric surfaces and their exact normals (shadecalc/surface.h, docs/formulas.md §7): the built-ins in
  * closed form, user surfaces by dual numbers through the expression evaluator. */
 #include <math.h>
 #include <stdlib.h>

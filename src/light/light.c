@@ -1,5 +1,5 @@
-/* Light sources, distance attenuation and spotlight functions (shadecalc/light.h; SPEC §2–§4,
- * reference §1–§2). Intermediates are rounded to the precision with Q(). */
+/* Light sources, distance attenuation and spotlight functions (shadecalc/light.h; docs/formulas.md §2–§4,
+ * docs/formulas.md §3–§4). Intermediates are rounded to the precision with Q(). */
 #include "shadecalc/light.h"
 
 #include <float.h>
@@ -24,7 +24,7 @@ static double lobe_pow(sc_prec p, double x, double y)
     return x <= 0.0 ? 0.0 : sc_p_pow(p, x, y);
 }
 
-/* ---- distance attenuation (SPEC §3) ---- */
+/* ---- distance attenuation (docs/formulas.md §3) ---- */
 
 /* 1/r²; where r² overflows the precision but 1/r² may not (highp r = 1e20: 1e-40, a
  * subnormal, not 0), r² is formed in double (r is at most the precision's largest value, so
@@ -90,7 +90,7 @@ double sc_atten_eval(sc_prec p, const sc_atten *a, double r)
     }
 }
 
-/* ---- spotlight functions (SPEC §4) ---- */
+/* ---- spotlight functions (docs/formulas.md §4) ---- */
 
 static double spot_opengl(sc_prec p, const sc_spot *s, double cos_s)
 {
@@ -100,7 +100,7 @@ static double spot_opengl(sc_prec p, const sc_spot *s, double cos_s)
 }
 
 /* 1 inside the inner cone (cos θ_s >= cos θ_p), 0 outside the outer one (cos θ_s <= cos θ_u),
- * else -1 with the ramp (cos θ_s − cos θ_u)/(cos θ_p − cos θ_u) in *ramp (SPEC §4). */
+ * else -1 with the ramp (cos θ_s − cos θ_u)/(cos θ_p − cos θ_u) in *ramp (docs/formulas.md §4). */
 static double penumbra(sc_prec p, const sc_spot *s, double cos_s, double *ramp)
 {
     double cp = cos_deg(p, s->inner), cu = cos_deg(p, s->outer);
@@ -134,7 +134,7 @@ double sc_spot_eval(sc_prec p, const sc_spot *s, double cos_s)
     }
 }
 
-/* ---- lights (SPEC §2) ---- */
+/* ---- lights (docs/formulas.md §2) ---- */
 
 void sc_light_init(sc_light *light, sc_light_kind kind)
 {
@@ -241,7 +241,7 @@ void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const 
         if (twice)
             out->r = Q(2.0 * out->r);
         if (!(out->r > 0.0))
-            rounded3(p, n, out->l); /* on the light: l = n (SPEC §2, r = 0) */
+            rounded3(p, n, out->l); /* on the light: l = n (docs/formulas.md §2, r = 0) */
         out->f_d = sc_atten_eval(p, &light->atten, out->r);
     }
     if (light->kind == SC_LIGHT_SPOT) {

@@ -1,6 +1,6 @@
 /* The legacy lighting equations (shadecalc/shade.h): the shader-literature ADS forms of the
- * lecture, OpenGL 1.x fixed-function lighting (GL 2.1 spec §2.14.1; reference §3) and Direct3D 9
- * fixed-function lighting (reference §4). None of them is a BRDF: no 1/π, and the specular term
+ * lecture, OpenGL 1.x fixed-function lighting (GL 2.1 spec §2.14.1; docs/formulas.md §6.8) and Direct3D 9
+ * fixed-function lighting (docs/formulas.md §6.8). None of them is a BRDF: no 1/π, and the specular term
  * is not multiplied by n·l. */
 #include <math.h>
 #include <string.h>

@@ -1,4 +1,4 @@
-/* The shading equation of SPEC §6 over any number of lights (shadecalc/shade.h). */
+/* The shading equation of docs/formulas.md §6 over any number of lights (shadecalc/shade.h). */
 #include "shadecalc/shade.h"
 
 #include <string.h>
@@ -15,7 +15,7 @@ void sc_model_init(sc_model *m, sc_model_kind kind)
     m->viewer_dir[2] = 1.0;
     m->clamp = 1;
     if (kind == SC_MODEL_OPENGL || kind == SC_MODEL_D3D9)
-        for (int c = 0; c < 3; c++) { /* the GL material defaults (reference §3) */
+        for (int c = 0; c < 3; c++) { /* the GL material defaults (docs/formulas.md §6.8) */
             m->brdf.amb[c] = 0.2;
             m->brdf.diff[c] = 0.8;
             m->brdf.spec[c] = 0.0;

@@ -59,7 +59,7 @@ static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_
         run_uniforms(a, 1, 1, name##_lane, &u);                                                   \
     }
 
-/* -- attenuation (SPEC §3; light.c): denominators at least 1e-4, so r = 0 is finite -- */
+/* -- attenuation (docs/formulas.md §3; light.c): denominators at least 1e-4, so r = 0 is finite -- */
 
 /* k: sc sl sq | r_start r_end 1/(r_end − r_start) | f_c r_c s_e f_max k0 −k1 | 1/r_max */
 static inline void atten_setup_clq(const void *params, func_uniforms *u)
@@ -165,7 +165,7 @@ FUNC_KERNEL(atten_pixar_u4, ACCURATE, atten_pixar, atten_setup_pixar)
 FUNC_KERNEL(atten_pixar_bits12, FAST12, atten_pixar, atten_setup_pixar)
 FUNC_KERNEL(atten_windowed_u12, ACCURATE, atten_windowed, atten_setup_windowed)
 
-/* -- spot (SPEC §4): the functions and their setup are in src/simd/spot_impl.h, shared with
+/* -- spot (docs/formulas.md §4): the functions and their setup are in src/simd/spot_impl.h, shared with
  * the shading kernel -- */
 
 FUNC_KERNEL(spot_opengl_u1, ACCURATE, spot_opengl, spot_setup_opengl)
@@ -174,7 +174,7 @@ FUNC_KERNEL(spot_directx_u16, ACCURATE, spot_directx, spot_setup_penumbra)
 FUNC_KERNEL(spot_directx_bits12, FAST12, spot_directx, spot_setup_penumbra)
 FUNC_KERNEL(spot_smoothstep_u8, ACCURATE, spot_smoothstep, spot_setup_penumbra)
 
-/* ---- BRDFs (SPEC §6, brdf.h): in l, v, n; out f (or f cos θ_i) as r, g, b ----
+/* ---- BRDFs (docs/formulas.md §6, brdf.h): in l, v, n; out f (or f cos θ_i) as r, g, b ----
  *
  * With n, l, v normalized and the unnormalized half vector h_u = l + v, the isotropic models
  * need only n·l, n·v, h_u·h_u, n·h_u and |n × h_u|² (= (h_u·h_u) sin²θ_h, without the
@@ -277,7 +277,7 @@ static SC_INLINE vf slope_exponent(int tier, const brdf_uniforms *u, const brdf_
     return vf_mul(g->s2, tier_rcp(tier, vf_mul(vf_set1(u->a2), hn2)));
 }
 
-/* Ward (reference §9), isotropic: E = exp(−tan²θ_h/α²) over 4π α² √(cos θ_i cos θ_o) (1992),
+/* Ward (docs/formulas.md §6.4), isotropic: E = exp(−tan²θ_h/α²) over 4π α² √(cos θ_i cos θ_o) (1992),
  * 4π α² cos θ_i cos θ_o (duer) or π α² (h_u·n)^4/(h_u·h_u) (gmd); k0 = 1/(4πα²) or 1/(πα²). */
 static SC_INLINE brdf_weights model_ward(int tier, const brdf_uniforms *u, const brdf_geometry *g)
 {
@@ -314,7 +314,7 @@ static SC_INLINE vf angle_of(int tier, vf c, vf s)
     return vf_select(low, vf_sub(vf_set1(1.57079632679489662f), a), vf_add(a, a));
 }
 
-/* Oren–Nayar (reference §10): α = max(θ_i, θ_o), β = min; cos Δφ = (n × l)·(n × v) /
+/* Oren–Nayar (docs/formulas.md §6.5): α = max(θ_i, θ_o), β = min; cos Δφ = (n × l)·(n × v) /
  * (|n × l| |n × v|), 0 where either is below 1e-12; tan((α+β)/2) = (sin α + sin β)/(cos α +
  * cos β). k0 = A (= C1), k1 = B, k2 = 0.125 σ²/(σ²+0.09), k3 = 0.17/π σ²/(σ²+0.13). */
 static SC_INLINE brdf_weights model_oren_nayar(int tier, const brdf_uniforms *u, const brdf_geometry *g)
@@ -418,7 +418,7 @@ static SC_INLINE vf fresnel_exact(int tier, const brdf_uniforms *u, vf c)
     return vf_select(vf_le(vf_set1(1.0f), sin2_t), vf_set1(1.0f), F);
 }
 
-/* Cook–Torrance (reference §11): S = D V (× 4 for the 1982 form, k3); Schlick F =
+/* Cook–Torrance (docs/formulas.md §6.6): S = D V (× 4 for the 1982 form, k3); Schlick F =
  * F0 + (1 − F0)(1 − v·h)^5 splits as S·(c_spec F0) + S (1 − v·h)^5·(c_spec (1 − F0)); with
  * v·h = |h_u|/2 for unit l, v. */
 static SC_INLINE brdf_weights model_cook_torrance(int tier, const brdf_uniforms *u, const brdf_geometry *g)

@@ -227,7 +227,7 @@ BATCH_N(normalize_u3, 3, 3, normalize_refined)
 BATCH_N(normalize_bits11, 3, 3, normalize_f8)
 BATCH_N(length_u2, 3, 1, length_lane)
 
-/* ---- the shading equation (SPEC §6): L = c_amb ⊙ L_A + Σ f(l, v) ⊙ E_L cos θ_i ---- */
+/* ---- the shading equation (docs/formulas.md §6): L = c_amb ⊙ L_A + Σ f(l, v) ⊙ E_L cos θ_i ---- */
 
 static const float inv_pi_f = 0.318309886183790671538f;
 

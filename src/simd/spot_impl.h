@@ -1,4 +1,4 @@
-/* The spot functions of SPEC §4 (light.c), written once against the vector helpers: the
+/* The spot functions of docs/formulas.md §4 (light.c), written once against the vector helpers: the
  * spot_* batch kernels of src/simd/light_impl.h and the shading kernel of src/simd/shade_impl.h
  * (which includes this file after its tier operations) both evaluate them. Each function reads
  * its uniforms, fixed once per call, from a func_uniforms:

@@ -2,9 +2,9 @@
 # scene files, output formats.
 . tests/e2e/lib.sh
 
-# Lambert ρ = 0.8 under a unit directional light along n: 0.8/π (reference §6)
+# Lambert ρ = 0.8 under a unit directional light along n: 0.8/π (docs/formulas.md §6.1)
 expect_close "lambert" 1e-11 '0.254647908947 0.254647908947 0.254647908947' -- shade -p double --light 'directional dir=0,0,1' --brdf 'lambert diff=0.8'
-# reference §3: the OpenGL worked example, non-local viewer
+# docs/formulas.md §6.8: the OpenGL worked example, non-local viewer
 expect_close "opengl worked example" 1e-11 '0.570958041479 0.346991760775 0.223025480071' -- shade -p double --light 'spot pos=1,3,0 dir=0,-1,-1 atten=clq sc=1 sl=0.05 sq=0.02 cutoff=30 exp=10 amb=0.1' --brdf 'opengl emission=0.1,0,0 amb=0.2 diff=0.8,0.5,0.2 spec=0.5 m=20' --ambient 0.2 --p 1,0,-4 --eye 0,0,0
 expect_close "opengl local viewer" 1e-11 '0.554565045793 0.330598765089 0.206632484385' -- shade -p double --light 'spot pos=1,3,0 dir=0,-1,-1 atten=clq sc=1 sl=0.05 sq=0.02 cutoff=30 exp=10 amb=0.1' --brdf 'opengl emission=0.1,0,0 amb=0.2 diff=0.8,0.5,0.2 spec=0.5 m=20 local-viewer=1' --ambient 0.2 --p 1,0,-4 --eye 0,0,0
 expect_close "cook-torrance l=v=n" 1e-11 '0.0127323954474 0.0127323954474 0.0127323954474' -- shade -p double --light 'directional dir=0,0,1' --brdf 'cook-torrance diff=0 f0=0.04 alpha=0.5'
@@ -58,9 +58,9 @@ expect "stray argument"          2 '' "error: shade: unexpected argument 'lamber
 expect "explain csv"             2 '' 'error: shade: --explain prints text or json, not csv' -- shade --light 'directional dir=0,0,1' --explain -f csv
 expect "help"                    0 '~usage: shadecalc shade' '' -- shade --help
 
-# reference §3: the same light made directional (0,3,4) with cutoff 180; separate specular
+# docs/formulas.md §6.8: the same light made directional (0,3,4) with cutoff 180; separate specular
 expect_close "opengl directional"  1e-11 '0.97433922005 0.63433922005 0.39433922005' -- shade -p double --light 'directional dir=0,3,4 amb=0.1' --brdf 'opengl emission=0.1,0,0 amb=0.2 diff=0.8,0.5,0.2 spec=0.5 m=20' --ambient 0.2 --p 1,0,-4 --eye 0,0,0
-# reference §11: GGX + height-correlated Smith + exact Fresnel at l = dir(60,0), v = dir(30,200):
+# docs/formulas.md §6.6: GGX + height-correlated Smith + exact Fresnel at l = dir(60,0), v = dir(30,200):
 # f = 0.0256271923424, times cos θ_i = 0.5
 expect_close "ggx general case"    1e-10 '0.0128135961712 0.0128135961712 0.0128135961712' -- shade -p double --light 'directional dir=0.8660254037844386,0,0.5' --brdf 'cook-torrance diff=0 alpha=0.3 F=exact ior=1.5' --v -0.46984631039295416,-0.17101007166283433,0.8660254037844387 --tangent 1,0,0
 

@@ -58,7 +58,7 @@ done <"$e2e_tmp/rows.csv"
 verdict "rows equal shade" test $same = 1
 verdict "window reaches 0 at r_end" test "$(sed -n 11p "$e2e_tmp/rows.csv")" = '10,0,0,0'
 
-# BRDF without lights: f(l, v) with l = dir(theta_i, 0), v = dir(theta_o, 0) (reference §0)
+# BRDF without lights: f(l, v) with l = dir(theta_i, 0), v = dir(theta_o, 0) (docs/formulas.md §1)
 # against shade with a unit directional light along l: L_o = f cos(theta_i)
 sweep -p double --var theta_i=0,30,60 --var theta_o=-50,20 --brdf 'cook-torrance alpha=0.3' |
     tail -n +2 >"$e2e_tmp/rows.csv"
@@ -134,7 +134,7 @@ done
 verdict "attenuation curves" test "$(svg_points "$e2e_tmp/attenuation.svg")" = \
     'none:241 inverse-square 1/r^2:241 clq 1, 0.05, 0.02:241 window 2..10:241 pixar fmax=2 fc=1 rc=1:241 windowed rmax=10:241'
 verdict "attenuation header" test "$(head -n 1 "$e2e_tmp/attenuation.csv")" = 'r,none,inverse_square,clq,window,pixar,windowed'
-# reference §1 worked examples: window at r = 4 is 0.75, pixar at r = 2 is 0.25, clq at 5 is 1/1.75
+# docs/formulas.md §3 worked examples: window at r = 4 is 0.75, pixar at r = 2 is 0.25, clq at 5 is 1/1.75
 verdict "attenuation values" awk -F, '$1 == 4 { w = $5 } $1 == 2 { p = $6 } $1 == 5 { c = $4 }
     END { exit !(w == 0.75 && p == 0.25 && c == 0.5714286) }' "$e2e_tmp/attenuation.csv"
 verdict "spot header" test "$(head -n 1 "$e2e_tmp/spot.csv")" = 'theta_s,opengl,directx,smoothstep'

@@ -1,6 +1,6 @@
-/* The BRDFs (shadecalc/brdf.h) against the worked examples of reference §6–§11 (computed there
+/* The BRDFs (shadecalc/brdf.h) against the worked examples of docs/formulas.md §6.1–§6.6 (computed there
  * in IEEE double by an independent Python implementation), relative tolerance 1e-10 in double
- * and 1e-5 in highp; plus the extremes of SPEC §6 and reciprocity on random directions. */
+ * and 1e-5 in highp; plus the extremes of docs/formulas.md §6 and reciprocity on random directions. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -14,7 +14,7 @@
 
 static const double pi = 3.14159265358979323846;
 
-/* dir(θ°, φ°) = (sin θ cos φ, sin θ sin φ, cos θ) about n = z, t = x (reference §0). */
+/* dir(θ°, φ°) = (sin θ cos φ, sin θ sin φ, cos θ) about n = z, t = x (docs/formulas.md §1). */
 static void dir(double theta_deg, double phi_deg, double out[3])
 {
     double t = theta_deg * pi / 180.0, f = phi_deg * pi / 180.0;
@@ -78,7 +78,7 @@ static void lambert_is_rho_over_pi(void **state)
     check_f(&b, 0, 0, 89, 0, 0.254647908947);
 }
 
-/* Reference §7 tabulates the lobes without the 1/π that SPEC §6 puts on original and modified
+/* Reference §7 tabulates the lobes without the 1/π that docs/formulas.md §6 puts on original and modified
  * Phong: those are divided by π here. */
 static void phong_worked_examples(void **state)
 {
@@ -201,7 +201,7 @@ static void cook_torrance_worked_examples(void **state)
     assert_true(t.G == 1.0);
 }
 
-/* F(θ) at the mirror configuration (h = n, v·h = cos θ), η = 1.5: reference §11 table. */
+/* F(θ) at the mirror configuration (h = n, v·h = cos θ), η = 1.5: docs/formulas.md §6.6 table. */
 static void fresnel_table(void **state)
 {
     (void)state;
@@ -239,7 +239,7 @@ static int acceptable(const sc_brdf_terms *t, const sc_brdf_terms *ref, sc_prec 
     return 1;
 }
 
-/* Every model and form, at every precision, on the extremes of SPEC §6. */
+/* Every model and form, at every precision, on the extremes of docs/formulas.md §6. */
 static void extremes_stay_finite(void **state)
 {
     (void)state;
@@ -282,7 +282,7 @@ static void below_horizon_is_zero(void **state)
 }
 
 /* Helmholtz reciprocity f(l, v) = f(v, l) on random directions, every model except original
- * Phong (reference §12), anisotropic where the model is. */
+ * Phong (docs/formulas.md §6.9), anisotropic where the model is. */
 static void reciprocity_on_random_directions(void **state)
 {
     (void)state;

@@ -1,5 +1,5 @@
 /* Albedo and reciprocity (shadecalc/check.h) against closed forms and the reference's tables
- * (reference §7–§12). The reference's albedos come from a coarser quadrature (about the lobe
+ * (docs/formulas.md §6.2–§6.9). The reference's albedos come from a coarser quadrature (about the lobe
  * axis, 720 azimuths): they agree with the closed forms to ~5e-6 but differ from converged
  * values by up to 6e-4 where the integrand has kinks (Oren–Nayar) or a grazing lobe (Ward–Dür);
  * a brute-force midpoint rule at 4000×8000 confirms this quadrature's values there. */

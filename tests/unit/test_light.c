@@ -1,5 +1,5 @@
 /* Lights, attenuation, spot functions and the shading models (shadecalc/light.h, shade.h)
- * against the worked examples of reference §1–§3 (independent Python, IEEE double). */
+ * against the worked examples of docs/formulas.md §3–§4, §6.8 (independent Python, IEEE double). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -44,7 +44,7 @@ static void attenuation_worked_examples(void **state)
     assert_rel(atten(SC_DOUBLE, filament, 5), 0.03515625, 1e-15);
 }
 
-/* SPEC §3 edges: r = 0 finite, r_start = r_end a step, f_c = f_max flat, C¹ pixar at r_c. */
+/* docs/formulas.md §3 edges: r = 0 finite, r_start = r_end a step, f_c = f_max flat, C¹ pixar at r_c. */
 static void attenuation_edges(void **state)
 {
     (void)state;
@@ -137,7 +137,7 @@ static sc_shade_point gl_vertex(void)
     return at;
 }
 
-/* reference §3 worked example: GL 1.x lighting of one vertex. */
+/* docs/formulas.md §6.8 worked example: GL 1.x lighting of one vertex. */
 static sc_scene gl_scene(sc_light *light)
 {
     sc_light_init(light, SC_LIGHT_SPOT);
@@ -201,7 +201,7 @@ static void opengl_worked_example(void **state)
         assert_rel(r.L[c], directional[c], 1e-11);
 }
 
-/* SPEC §6: L_o = c_amb ⊙ L_A + Σ [c_amb ⊙ L_A,k + f ⊙ E_L cos̄θ_i], against the closed form. */
+/* docs/formulas.md §6: L_o = c_amb ⊙ L_A + Σ [c_amb ⊙ L_A,k + f ⊙ E_L cos̄θ_i], against the closed form. */
 static void shading_equation_sums_lights(void **state)
 {
     (void)state;

@@ -623,7 +623,7 @@ static void perspective_maps_the_frustum_to_the_ndc_cube(void **state) {
 
 /* For M = T·R·S (non-uniform S), (M3⁻¹)ᵀ = (R·S)⁻ᵀ = R·S⁻¹ (R orthogonal). And the point of
  * it: a tangent t ⊥ n stays perpendicular, (M3·t)·(N·n) = t·n = 0. For a rotation with a
- * translation it is the rotation itself (SPEC §7). */
+ * translation it is the rotation itself (docs/formulas.md §7). */
 static void normal_matrix_is_the_inverse_transpose(void **state) {
     (void)state;
     const double tol = 256 * U_DOUBLE;

@@ -1,4 +1,4 @@
-/* Precision emulation (SPEC §9): binary16 and lowp rounding at ties, subnormal edges, overflow;
+/* Precision emulation (docs/formulas.md §9): binary16 and lowp rounding at ties, subnormal edges, overflow;
  * the ULP measure; shortest decimals that read back. */
 #include <math.h>
 #include <setjmp.h>

@@ -69,7 +69,7 @@ static void render_ok(const sc_mesh *m, const sc_surface *s, const sc_scene *sce
         fail_msg("sc_render: %s", err);
 }
 
-/* Lambert ρ = 0.8 under a directional light at cos θ = 0.8: L = ρ/π · E · cos θ (SPEC §6) at
+/* Lambert ρ = 0.8 under a directional light at cos θ = 0.8: L = ρ/π · E · cos θ (docs/formulas.md §6) at
  * every covered pixel, in every mesh mode; the square's projection covers its area in pixels
  * (2s · S/(2·d·tan 20°))², up to its perimeter. */
 static void flat_square_matches_lambert(void **state)
