@@ -189,6 +189,12 @@ lib-tests: build-all
 	@sh tests/install/exports.sh $(BUILD) '$(CC)'
 	@sh tests/install/run.sh '$(MAKE)' '$(CC)'
 
+# memcheck over the end-to-end tests (not part of check: it takes many minutes).
+.PHONY: check-valgrind
+check-valgrind: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BIN)
+	@sh tests/e2e/valgrind.sh $(BIN)
+
 # libFuzzer harnesses, built with clang against an instrumented copy of the library:
 # a bounded smoke run in `check`; `make fuzz FUZZ_SECONDS=600` for a long one.
 FUZZ_CC      ?= clang
