@@ -1,6 +1,6 @@
 /*
- * shadecalc/check.h — are the models physical? Directional albedo and reciprocity (docs/formulas.md §6,
- * docs/formulas.md §6, §6.9).
+ * shadecalc/check.h — are the models physical? Directional albedo and reciprocity
+ * (docs/formulas.md §6, §6.9).
  *
  *   sc_albedo              a(θ_i) = ∫ f(l, v) cos θ_o dω_v by quadrature, with an error estimate
  *   sc_reciprocity_error   max |f(l, v) − f(v, l)| / max(|f(l, v)|, |f(v, l)|) over a grid of pairs

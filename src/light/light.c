@@ -1,5 +1,5 @@
-/* Light sources, distance attenuation and spotlight functions (shadecalc/light.h; docs/formulas.md §2–§4,
- * docs/formulas.md §3–§4). Intermediates are rounded to the precision with Q(). */
+/* Light sources, distance attenuation and spotlight functions (shadecalc/light.h;
+ * docs/formulas.md §2–§4). Intermediates are rounded to the precision with Q(). */
 #include "shadecalc/light.h"
 
 #include <float.h>
