@@ -180,6 +180,14 @@ static sc_light directional(const double d[3])
     return light;
 }
 
+/* a directional light from l = dir(θ, 0), and l's mirror about n = +z, dir(θ, 180) */
+static sc_light light_and_mirror(double theta, double l[3], double mirror[3])
+{
+    dir(theta, 0, l);
+    dir(theta, 180, mirror);
+    return directional(l);
+}
+
 static sc_light clq_point(double x, double y, double z, double sc, double sl, double sq)
 {
     sc_light light;
@@ -193,6 +201,18 @@ static sc_scene scene_of(const sc_light *lights, int n, sc_model_kind kind)
 {
     sc_scene s = {.lights = lights, .n_lights = n};
     sc_model_init(&s.model, kind);
+    return s;
+}
+
+/* one light; the material without ambient: diffuse and specular grey, shininess m */
+static sc_scene grey_scene(const sc_light *light, sc_model_kind kind, double diff, double spec,
+                           double m)
+{
+    sc_scene s = scene_of(light, 1, kind);
+    set3(s.model.brdf.amb, 0, 0, 0);
+    set3(s.model.brdf.diff, diff, diff, diff);
+    set3(s.model.brdf.spec, spec, spec, spec);
+    s.model.brdf.m = m;
     return s;
 }
 
@@ -221,14 +241,8 @@ static void ads_closed_forms(void **state)
 {
     (void)state;
     double l[3], mirror[3];
-    dir(60, 0, l);
-    dir(60, 180, mirror);
-    sc_light light = directional(l);
-    sc_scene s = scene_of(&light, 1, SC_MODEL_ADS);
-    set3(s.model.brdf.diff, 0.5, 0.5, 0.5);
-    set3(s.model.brdf.spec, 0.25, 0.25, 0.25);
-    set3(s.model.brdf.amb, 0, 0, 0);
-    s.model.brdf.m = 32;
+    sc_light light = light_and_mirror(60, l, mirror);
+    sc_scene s = grey_scene(&light, SC_MODEL_ADS, 0.5, 0.25, 32);
     const double up[3] = {0, 0, 1};
     struct {
         sc_ads_form form;
@@ -260,10 +274,7 @@ static void ads_highlight_behind_the_reflection(void **state)
     double l[3];
     dir(60, 0, l);
     sc_light light = directional(l);
-    sc_scene s = scene_of(&light, 1, SC_MODEL_ADS);
-    set3(s.model.brdf.diff, 0, 0, 0);
-    set3(s.model.brdf.spec, 1, 1, 1);
-    s.model.brdf.m = 4;
+    sc_scene s = grey_scene(&light, SC_MODEL_ADS, 0, 1, 4);
     sc_shade_point at = up_point(l);
     sc_shade_result r = {.per_light = NULL};
     s.model.ads_form = SC_ADS_PHONG;
@@ -313,9 +324,7 @@ static void ads_half_vector_of_opposite_directions(void **state)
     double n[3];
     dir(30, 0, n);
     sc_light light = directional(l);
-    sc_scene s = scene_of(&light, 1, SC_MODEL_ADS);
-    set3(s.model.brdf.diff, 0, 0, 0);
-    set3(s.model.brdf.spec, 0.5, 0.5, 0.5);
+    sc_scene s = grey_scene(&light, SC_MODEL_ADS, 0, 0.5, 32);
     sc_shade_point at = point_at(origin, n, v);
     sc_shade_result r = {.per_light = NULL};
     sc_shade(SC_DOUBLE, &s, &at, &r);
@@ -471,10 +480,7 @@ static void clamping(void **state)
     const double up[3] = {0, 0, 1};
     sc_light light = directional(up);
     set3(light.intensity, 3, 0.5, 1);
-    sc_scene s = scene_of(&light, 1, SC_MODEL_OPENGL);
-    set3(s.model.brdf.amb, 0, 0, 0);
-    set3(s.model.brdf.diff, 0.5, 0.5, 0.5);
-    set3(s.model.brdf.spec, 0.5, 0.5, 0.5);
+    sc_scene s = grey_scene(&light, SC_MODEL_OPENGL, 0.5, 0.5, 0);
     s.model.separate_specular = 1;
     sc_shade_point at = up_point(up);
     sc_shade_result r = {.per_light = NULL};
@@ -495,14 +501,8 @@ static void viewer_direction(void **state)
 {
     (void)state;
     double l[3], v[3];
-    dir(40, 0, l);
-    dir(40, 180, v);
-    sc_light light = directional(l);
-    sc_scene s = scene_of(&light, 1, SC_MODEL_D3D9);
-    set3(s.model.brdf.amb, 0, 0, 0);
-    set3(s.model.brdf.diff, 0, 0, 0);
-    set3(s.model.brdf.spec, 1, 1, 1);
-    s.model.brdf.m = 10;
+    sc_light light = light_and_mirror(40, l, v);
+    sc_scene s = grey_scene(&light, SC_MODEL_D3D9, 0, 1, 10);
     s.model.clamp = 0;
     sc_shade_point at = up_point(v);
     sc_shade_result r = {.per_light = NULL};
