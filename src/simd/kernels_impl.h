@@ -20,8 +20,10 @@
 #include "shadecalc/glsl.h"
 
 /* Drivers and lanes are inlined into each kernel, so that the lane function passed by pointer
- * becomes straight-line code in the loop. */
-#if defined(__GNUC__)
+ * becomes straight-line code in the loop. `make coverage` defines SC_NO_ALWAYS_INLINE: one body
+ * per helper, so that a branch counts as taken when any kernel takes it (inlined copies would
+ * each count the branches on their compile-time tier as never taken). */
+#if defined(__GNUC__) && !defined(SC_NO_ALWAYS_INLINE)
 #define SC_INLINE inline __attribute__((always_inline))
 #else
 #define SC_INLINE inline
