@@ -36,9 +36,9 @@ int bench_sleef_loops(const char *kernel, const bench_sleef **out);
 
 typedef struct {
     char cpu[128];
-    char date[32];  /* UTC, ISO 8601, when the run started */
-    double load[3]; /* load averages over 1, 5, 15 minutes at the start; -1 if unknown */
-    double bandwidth; /* bytes per ns, measured: read + written by a stream loop */
+    char date[32];      /* UTC, ISO 8601, when the run started */
+    double load[3];     /* load averages over 1, 5, 15 minutes at the start; -1 if unknown */
+    double bandwidth;   /* bytes per ns, measured: read + written by a stream loop */
     double lane_ops_ns; /* peak float lane operations per ns at 8 lanes (an FMA counts one):
                          * AVX2 FMA chains, or scalar chains times 8 without AVX2 */
 } bench_machine;
@@ -56,26 +56,26 @@ typedef struct bench_row {
     const char *scene;               /* "lambert 1d", …; "" for non-shading kernels */
     size_t n;
     double ns_per_elem, ns_min, ns_max; /* the median of the repeats, their minimum, maximum */
-    double ns_mad;        /* median absolute deviation of the repeats from the median */
-    double cv;            /* robust coefficient of variation: 1.4826 MAD / median */
-    int noisy;            /* cv > BENCH_NOISY_CV or max > 2 × median: rerun with more repeats */
+    double ns_mad; /* median absolute deviation of the repeats from the median */
+    double cv;     /* robust coefficient of variation: 1.4826 MAD / median */
+    int noisy;     /* cv > BENCH_NOISY_CV or max > 2 × median: rerun with more repeats */
     double speedup_vs_scalar, speedup_vs_libm;
     sc_batch_error err;
-    size_t not_rounded;   /* normal results that differ from the reference rounded to float */
+    size_t not_rounded; /* normal results that differ from the reference rounded to float */
     const sc_batch_entry *entry; /* the table row measured (its bounds); NULL: a peer row */
-    double roofline_ns;   /* max(compute bound, memory bound) per element */
-    double roofline_fraction; /* roofline_ns / ns_per_elem */
-    int pareto;           /* not beaten in both error and speed among the kernel's rows */
+    double roofline_ns;          /* max(compute bound, memory bound) per element */
+    double roofline_fraction;    /* roofline_ns / ns_per_elem */
+    int pareto;                  /* not beaten in both error and speed among the kernel's rows */
     const struct bench_row *dominated_by; /* a tier's first peer row (libm, gcc-fast,
                                             clang-fast, SLEEF) no slower and no less accurate */
 } bench_row;
 
 typedef struct {
     const char *kernels[32];
-    int n_kernels;          /* 0: all */
-    int isa_mask;           /* bit per sc_isa; 0: all supported */
+    int n_kernels; /* 0: all */
+    int isa_mask;  /* bit per sc_isa; 0: all supported */
     const char *tiers[16];
-    int n_tiers;            /* 0: all */
+    int n_tiers; /* 0: all */
     size_t sizes[4];
     int n_sizes;
     int repeat;

@@ -133,7 +133,8 @@ static int arrays_make(bench_arrays *b, const sc_batch_entry *e, size_t n, int u
 }
 
 /* Inputs from the domain of `domain_of` (the kernel's narrowest tier: valid for all tiers). */
-static int data_make(bench_data *d, const sc_batch_entry *domain_of, size_t n, const bench_scene *bs)
+static int data_make(bench_data *d, const sc_batch_entry *domain_of, size_t n,
+                     const bench_scene *bs)
 {
     memset(d, 0, sizeof *d);
     d->n = n;
@@ -257,7 +258,8 @@ static const sc_batch_entry *kernel_entry(const char *kernel, int last)
 {
     const sc_batch_entry *found = NULL;
     for (int i = 0; i < sc_batch_count; i++)
-        if (sc_batch_table[i].isa == SC_ISA_SCALAR && strcmp(sc_batch_table[i].kernel, kernel) == 0) {
+        if (sc_batch_table[i].isa == SC_ISA_SCALAR &&
+            strcmp(sc_batch_table[i].kernel, kernel) == 0) {
             found = &sc_batch_table[i];
             if (!last)
                 break;
@@ -309,8 +311,8 @@ static bench_row *add_row(bench_state *st, const char *kernel, const char *isa, 
     return r;
 }
 
-static void roofline(const bench_state *st, const sc_batch_entry *e, const bench_data *d,
-                     int width, bench_row *r)
+static void roofline(const bench_state *st, const sc_batch_entry *e, const bench_data *d, int width,
+                     bench_row *r)
 {
     const sc_batch_scene *s = d->has_scene ? &d->scene : NULL;
     double ops = s ? shade_ops(s) : e->ops;
@@ -357,8 +359,9 @@ static void measure_loop(bench_state *st, const sc_batch_entry *accurate, bench_
 static const struct {
     const char *isa;
     sc_batch_fn (*lookup)(const char *kernel);
-} plain_loops[] = {
-    {"libm", bench_libm_loop}, {"gcc-fast", bench_fast_gcc_loop}, {"clang-fast", bench_fast_clang_loop}};
+} plain_loops[] = {{"libm", bench_libm_loop},
+                   {"gcc-fast", bench_fast_gcc_loop},
+                   {"clang-fast", bench_fast_clang_loop}};
 enum { N_PLAIN = (int)(sizeof plain_loops / sizeof plain_loops[0]) };
 
 static int plain_loop_count(const char *kernel)

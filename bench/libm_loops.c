@@ -15,14 +15,14 @@
 
 static const float SC_PI_F = 3.14159265358979323846f;
 
-#define LOOP1(name, expr)                                                                         \
-    static void loop_##name(const sc_batch_args *a)                                               \
-    {                                                                                             \
-        const float *restrict x = a->in[0];                                                       \
-        float *restrict out = a->out[0];                                                          \
-        size_t n = a->n;                                                                          \
-        for (size_t i = 0; i < n; i++)                                                            \
-            out[i] = (expr);                                                                      \
+#define LOOP1(name, expr)                                                                          \
+    static void loop_##name(const sc_batch_args *a)                                                \
+    {                                                                                              \
+        const float *restrict x = a->in[0];                                                        \
+        float *restrict out = a->out[0];                                                           \
+        size_t n = a->n;                                                                           \
+        for (size_t i = 0; i < n; i++)                                                             \
+            out[i] = (expr);                                                                       \
     }
 LOOP1(exp2, exp2f(x[i]))
 LOOP1(exp, expf(x[i]))
@@ -34,14 +34,14 @@ LOOP1(sin, sinf(x[i]))
 LOOP1(cos, cosf(x[i]))
 LOOP1(acos, acosf(x[i]))
 
-#define LOOP2(name, expr)                                                                         \
-    static void loop_##name(const sc_batch_args *a)                                               \
-    {                                                                                             \
-        const float *restrict x = a->in[0], *restrict y = a->in[1];                               \
-        float *restrict out = a->out[0];                                                          \
-        size_t n = a->n;                                                                          \
-        for (size_t i = 0; i < n; i++)                                                            \
-            out[i] = (expr);                                                                      \
+#define LOOP2(name, expr)                                                                          \
+    static void loop_##name(const sc_batch_args *a)                                                \
+    {                                                                                              \
+        const float *restrict x = a->in[0], *restrict y = a->in[1];                                \
+        float *restrict out = a->out[0];                                                           \
+        size_t n = a->n;                                                                           \
+        for (size_t i = 0; i < n; i++)                                                             \
+            out[i] = (expr);                                                                       \
     }
 LOOP2(atan2, atan2f(x[i], y[i]))
 LOOP2(pow, powf(x[i], y[i]))
@@ -50,7 +50,8 @@ LOOP2(pow, powf(x[i], y[i]))
  * through restrict locals of three outputs. a = in[0..2], b = in[3..5]. */
 #define VEC3_IN(a) (a)->in[0], (a)->in[1], (a)->in[2]
 #define VEC3_OUT(a) (a)->out[0], (a)->out[1], (a)->out[2]
-#define VEC3_PARAMS(x, y, z) const float *restrict x, const float *restrict y, const float *restrict z
+#define VEC3_PARAMS(x, y, z)                                                                       \
+    const float *restrict x, const float *restrict y, const float *restrict z
 #define VEC3_OUTS float *restrict ox, float *restrict oy, float *restrict oz
 
 static void dot_arrays(VEC3_PARAMS(ax, ay, az), VEC3_PARAMS(bx, by, bz), float *restrict out,
@@ -87,7 +88,10 @@ static void normalize_arrays(VEC3_PARAMS(x, y, z), VEC3_OUTS, size_t n)
         oz[i] = z[i] / len;
     }
 }
-static void loop_normalize(const sc_batch_args *a) { normalize_arrays(VEC3_IN(a), VEC3_OUT(a), a->n); }
+static void loop_normalize(const sc_batch_args *a)
+{
+    normalize_arrays(VEC3_IN(a), VEC3_OUT(a), a->n);
+}
 
 static void length_arrays(VEC3_PARAMS(x, y, z), float *restrict out, size_t n)
 {
@@ -98,7 +102,10 @@ static void loop_length(const sc_batch_args *a) { length_arrays(VEC3_IN(a), a->o
 
 /* ---- the shading equation as a user writes it: float, sqrtf, powf ---- */
 
-static float dot3(const float *a, const float *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static float dot3(const float *a, const float *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 static void unit(float *v)
 {
@@ -118,7 +125,8 @@ static float specular(const sc_batch_scene *s, const float *n, const float *v, c
         return (s->m + 8.0f) / (8.0f * SC_PI_F) * powf(nh, s->m);
     float a2 = s->alpha * s->alpha, d = nh * nh * (a2 - 1.0f) + 1.0f;
     float D = a2 / (SC_PI_F * d * d);
-    float V = 0.5f / (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
+    float V = 0.5f /
+              (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
     float F = s->f0 + (1.0f - s->f0) * powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f);
     return D * V * F;
 }
@@ -127,7 +135,9 @@ static float spot(const sc_batch_light *lt, const float *l)
 {
     float cos_s = -dot3(l, lt->dir);
     if (lt->spot == SC_BATCH_SPOT_OPENGL)
-        return lt->cos_outer <= -1.0f ? 1.0f : cos_s >= lt->cos_outer ? powf(cos_s, lt->exponent) : 0.0f;
+        return lt->cos_outer <= -1.0f   ? 1.0f
+               : cos_s >= lt->cos_outer ? powf(cos_s, lt->exponent)
+                                        : 0.0f;
     if (cos_s >= lt->cos_inner)
         return 1.0f;
     if (cos_s <= lt->cos_outer)
@@ -181,19 +191,19 @@ static void loop_shade(const sc_batch_args *a)
 
 /* ---- attenuation, spot, and the BRDF of the table's row (cook-torrance GGX) ---- */
 
-#define ATTEN_LOOP(name, expr)                                                                    \
-    static void loop_##name(const sc_batch_args *a)                                               \
-    {                                                                                             \
-        const sc_batch_atten_params p = *(const sc_batch_atten_params *)a->params;                \
-        const float *restrict in = a->in[0];                                                      \
-        float *restrict out = a->out[0];                                                          \
-        size_t n = a->n;                                                                          \
-        (void)p;                                                                                  \
-        for (size_t i = 0; i < n; i++) {                                                          \
-            float r = in[i];                                                                      \
-            (void)r;                                                                              \
-            out[i] = (expr);                                                                      \
-        }                                                                                         \
+#define ATTEN_LOOP(name, expr)                                                                     \
+    static void loop_##name(const sc_batch_args *a)                                                \
+    {                                                                                              \
+        const sc_batch_atten_params p = *(const sc_batch_atten_params *)a->params;                 \
+        const float *restrict in = a->in[0];                                                       \
+        float *restrict out = a->out[0];                                                           \
+        size_t n = a->n;                                                                           \
+        (void)p;                                                                                   \
+        for (size_t i = 0; i < n; i++) {                                                           \
+            float r = in[i];                                                                       \
+            (void)r;                                                                               \
+            out[i] = (expr);                                                                       \
+        }                                                                                          \
     }
 ATTEN_LOOP(atten_none, 1.0f)
 ATTEN_LOOP(atten_invsq, 1.0f / fmaxf(r * r, 1e-4f))
@@ -212,7 +222,7 @@ static void loop_atten_pixar(const sc_batch_args *a)
     float k0 = logf(p.f_c / p.f_max), k1 = p.s_e / k0;
     for (size_t i = 0; i < a->n; i++) {
         float r = in[i];
-        out[i] = r > p.r_c           ? p.f_c * powf(p.r_c / r, p.s_e)
+        out[i] = r > p.r_c          ? p.f_c * powf(p.r_c / r, p.s_e)
                  : p.f_c == p.f_max ? p.f_max
                                     : p.f_max * expf(k0 * powf(r / p.r_c, -k1));
     }
@@ -266,7 +276,8 @@ static void loop_brdf(const sc_batch_args *a)
         unit(h);
         float nh = fmaxf(dot3(n, h), 0.0f), d = nh * nh * (a2 - 1.0f) + 1.0f;
         float D = a2 / (SC_PI_F * d * d);
-        float V = 0.5f / (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
+        float V = 0.5f /
+                  (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
         float m5 = powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f), w = p->cos ? nl : 1.0f;
         for (int c = 0; c < 3; c++) {
             float F = p->f0[c] + (1.0f - p->f0[c]) * m5;
@@ -280,19 +291,32 @@ static const struct {
     const char *kernel;
     sc_batch_fn fn;
 } loops[] = {
-    {"exp2", loop_exp2},       {"exp", loop_exp},
-    {"log2", loop_log2},       {"log", loop_log},
-    {"pow", loop_pow},         {"inversesqrt", loop_inversesqrt},
-    {"sqrt", loop_sqrt},       {"dot", loop_dot},
-    {"reflect", loop_reflect}, {"normalize", loop_normalize},
-    {"length", loop_length},   {"shade", loop_shade},
-    {"sin", loop_sin},         {"cos", loop_cos},
-    {"acos", loop_acos},       {"atan2", loop_atan2},
-    {"atten_none", loop_atten_none}, {"atten_invsq", loop_atten_invsq},
-    {"atten_clq", loop_atten_clq}, {"atten_window", loop_atten_window},
-    {"atten_pixar", loop_atten_pixar}, {"atten_windowed", loop_atten_windowed},
-    {"spot_opengl", loop_spot_opengl}, {"spot_directx", loop_spot_directx},
-    {"spot_smoothstep", loop_spot_smoothstep}, {"brdf", loop_brdf},
+    {"exp2", loop_exp2},
+    {"exp", loop_exp},
+    {"log2", loop_log2},
+    {"log", loop_log},
+    {"pow", loop_pow},
+    {"inversesqrt", loop_inversesqrt},
+    {"sqrt", loop_sqrt},
+    {"dot", loop_dot},
+    {"reflect", loop_reflect},
+    {"normalize", loop_normalize},
+    {"length", loop_length},
+    {"shade", loop_shade},
+    {"sin", loop_sin},
+    {"cos", loop_cos},
+    {"acos", loop_acos},
+    {"atan2", loop_atan2},
+    {"atten_none", loop_atten_none},
+    {"atten_invsq", loop_atten_invsq},
+    {"atten_clq", loop_atten_clq},
+    {"atten_window", loop_atten_window},
+    {"atten_pixar", loop_atten_pixar},
+    {"atten_windowed", loop_atten_windowed},
+    {"spot_opengl", loop_spot_opengl},
+    {"spot_directx", loop_spot_directx},
+    {"spot_smoothstep", loop_spot_smoothstep},
+    {"brdf", loop_brdf},
 };
 
 sc_batch_fn BENCH_LOOPS_LOOKUP(const char *kernel)

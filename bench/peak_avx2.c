@@ -12,8 +12,8 @@
 /* One step of every chain: named variables, not an array, so that they live in registers. */
 #define CHAINS(X) X(0) X(1) X(2) X(3) X(4) X(5) X(6)
 #define DECLARE(k) __m256 f##k = _mm256_set1_ps(1.0f + k), s##k = f##k;
-#define STEP(k)                                                                                   \
-    f##k = _mm256_fmadd_ps(f##k, m, c);                                                           \
+#define STEP(k)                                                                                    \
+    f##k = _mm256_fmadd_ps(f##k, m, c);                                                            \
     s##k = _mm256_add_ps(s##k, c);
 #define SUM(k) total = _mm256_add_ps(total, _mm256_add_ps(f##k, s##k));
 

@@ -12,7 +12,8 @@ static const char *bound_text(const sc_batch_entry *e, char *buf, size_t size)
     else if (e->bound_ulp > 0)
         snprintf(buf, size, "%g ulp", e->bound_ulp);
     else if (e->bound_rel > 0)
-        snprintf(buf, size, "rel 2^%d%s", (int)lround(log2(e->bound_rel)), e->bound_abs > 0 ? " + abs" : "");
+        snprintf(buf, size, "rel 2^%d%s", (int)lround(log2(e->bound_rel)),
+                 e->bound_abs > 0 ? " + abs" : "");
     else
         snprintf(buf, size, "abs 2^%d x scale", (int)lround(log2(e->bound_abs)));
     return buf;
@@ -46,8 +47,10 @@ static void list_row(FILE *out, int format, const sc_batch_entry *e, int first)
     if (format == BENCH_CSV) {
         fprintf(out, "%s,%s,\"%s\",%s,\"%s\"\n", e->kernel, e->tier, isas, bound, e->domain);
     } else if (format == BENCH_JSON) {
-        fprintf(out, "%s  {\"kernel\": \"%s\", \"tier\": \"%s\", \"isas\": \"%s\", \"bound\": \"%s\", "
-                     "\"bound_ulp\": ", first ? "" : ",\n", e->kernel, e->tier, isas, bound);
+        fprintf(out,
+                "%s  {\"kernel\": \"%s\", \"tier\": \"%s\", \"isas\": \"%s\", \"bound\": \"%s\", "
+                "\"bound_ulp\": ",
+                first ? "" : ",\n", e->kernel, e->tier, isas, bound);
         fprintf(out, e->bound_ulp > 0 ? "%g" : "null", e->bound_ulp);
         fprintf(out, ", \"bound_rel\": %g, \"bound_abs\": %g, \"domain\": \"", e->bound_rel,
                 e->bound_abs);
@@ -103,14 +106,14 @@ static void table_row(FILE *out, const bench_row *r)
         snprintf(roof, sizeof roof, "%.0f%%", 100.0 * r->roofline_fraction);
     char cv[16];
     snprintf(cv, sizeof cv, "%.1f%%%s", 100.0 * r->cv, r->noisy ? "!" : "");
-    fprintf(out,
-            "%-11s %-17s %-10s %-8s %8zu %9.3f %8.3f %8.3f %6s %7.1f %6.2f %6.2f %11.6g %7.3f %7zu "
-            "%9.2e %-16s %6s %-6s %s\n",
-            r->kernel, r->scene[0] ? r->scene : "-", r->isa, r->tier, r->n, r->ns_per_elem,
-            r->ns_min, r->ns_max, cv, 1e3 / r->ns_per_elem, r->speedup_vs_scalar, r->speedup_vs_libm,
-            r->err.max_ulp, r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0,
-            r->not_rounded, r->err.max_rel, bound, roof, r->pareto ? "*" : "",
-            dominated_text(r, peer, sizeof peer));
+    fprintf(
+        out,
+        "%-11s %-17s %-10s %-8s %8zu %9.3f %8.3f %8.3f %6s %7.1f %6.2f %6.2f %11.6g %7.3f %7zu "
+        "%9.2e %-16s %6s %-6s %s\n",
+        r->kernel, r->scene[0] ? r->scene : "-", r->isa, r->tier, r->n, r->ns_per_elem, r->ns_min,
+        r->ns_max, cv, 1e3 / r->ns_per_elem, r->speedup_vs_scalar, r->speedup_vs_libm,
+        r->err.max_ulp, r->err.count ? r->err.sum_ulp / (double)r->err.count : 0.0, r->not_rounded,
+        r->err.max_rel, bound, roof, r->pareto ? "*" : "", dominated_text(r, peer, sizeof peer));
 }
 
 /* a number, or nothing where it is not defined */
@@ -146,8 +149,9 @@ static void json_number(FILE *out, const char *key, double v, int comma)
 
 static void json_row(FILE *out, const bench_row *r, int last)
 {
-    fprintf(out, "    {\"kernel\": \"%s\", \"scene\": \"%s\", \"isa\": \"%s\", \"tier\": \"%s\", "
-                 "\"n\": %zu, ",
+    fprintf(out,
+            "    {\"kernel\": \"%s\", \"scene\": \"%s\", \"isa\": \"%s\", \"tier\": \"%s\", "
+            "\"n\": %zu, ",
             r->kernel, r->scene, r->isa, r->tier, r->n);
     json_number(out, "ns_per_elem", r->ns_per_elem, 1);
     json_number(out, "elems_per_s", 1e9 / r->ns_per_elem, 1);
@@ -167,18 +171,19 @@ static void json_row(FILE *out, const bench_row *r, int last)
     json_number(out, "roofline_ns", r->roofline_ns, 1);
     json_number(out, "roofline_fraction", r->roofline_fraction, 1);
     char peer[40];
-    fprintf(out, "\"not_correctly_rounded\": %zu, \"pareto\": %s, \"dominated_by\": ", r->not_rounded,
+    fprintf(out,
+            "\"not_correctly_rounded\": %zu, \"pareto\": %s, \"dominated_by\": ", r->not_rounded,
             r->pareto ? "true" : "false");
-    fprintf(out, r->dominated_by ? "\"%s\"}%s\n" : "null}%s%s\n", r->dominated_by ? dominated_text(r, peer, sizeof peer) : "",
-            last ? "" : ",");
+    fprintf(out, r->dominated_by ? "\"%s\"}%s\n" : "null}%s%s\n",
+            r->dominated_by ? dominated_text(r, peer, sizeof peer) : "", last ? "" : ",");
 }
 
 /* The compiler and flags of this build (the kernels; the peers add their own flags) */
 #define BENCH_STR2(x) #x
 #define BENCH_STR(x) BENCH_STR2(x)
 #if defined(__clang__)
-#define BENCH_COMPILER                                                                            \
-    "clang " BENCH_STR(__clang_major__) "." BENCH_STR(__clang_minor__) "." BENCH_STR(         \
+#define BENCH_COMPILER                                                                             \
+    "clang " BENCH_STR(__clang_major__) "." BENCH_STR(__clang_minor__) "." BENCH_STR(              \
         __clang_patchlevel__)
 #elif defined(__GNUC__)
 #define BENCH_COMPILER "gcc " __VERSION__
@@ -192,11 +197,13 @@ static void json_row(FILE *out, const bench_row *r, int last)
 /* The run's metadata in JSON: date, machine, load, compiler and flags, SLEEF */
 static void metadata_json(FILE *out, const bench_machine *m)
 {
-    fprintf(out, "{\n  \"machine\": {\"cpu\": \"%s\", \"stream_bandwidth_gb_s\": %.3g, "
-                 "\"peak_lane_ops_per_ns\": %.3g},\n",
+    fprintf(out,
+            "{\n  \"machine\": {\"cpu\": \"%s\", \"stream_bandwidth_gb_s\": %.3g, "
+            "\"peak_lane_ops_per_ns\": %.3g},\n",
             m->cpu, m->bandwidth, m->lane_ops_ns);
-    fprintf(out, "  \"run\": {\"date\": \"%s\", \"load_average\": [%.2f, %.2f, %.2f], "
-                 "\"compiler\": \"",
+    fprintf(out,
+            "  \"run\": {\"date\": \"%s\", \"load_average\": [%.2f, %.2f, %.2f], "
+            "\"compiler\": \"",
             m->date, m->load[0], m->load[1], m->load[2]);
     json_text(out, BENCH_COMPILER);
     fprintf(out, "\", \"flags\": \"");
@@ -229,15 +236,17 @@ static void csv_report(FILE *out, const bench_row *rows, int n)
 /* The header comment of the table and Markdown reports ("# " or "" before each line) */
 static void header_comment(FILE *out, const char *lead, const bench_machine *m)
 {
-    fprintf(out, "%s%s; %s; load %.2f; stream bandwidth %.3g GB/s; peak %.3g float lane-ops/ns at 8 "
-                 "lanes (an FMA counts one); %s, %s\n",
+    fprintf(out,
+            "%s%s; %s; load %.2f; stream bandwidth %.3g GB/s; peak %.3g float lane-ops/ns at 8 "
+            "lanes (an FMA counts one); %s, %s\n",
             lead, m->cpu, m->date, m->load[0], m->bandwidth, m->lane_ops_ns, BENCH_COMPILER,
             SC_BENCH_FLAGS);
     if (*bench_sleef_absence())
         fprintf(out, "%s%s\n", lead, bench_sleef_absence());
-    fprintf(out, "%smedian_ns: the median of the repeats; cv: 1.4826 MAD / median, ! where noisy "
-                 "(cv > %.0f%% or max > 2 median); not_cr: results not the reference rounded to "
-                 "float; dominated_by: a peer row no slower and no less accurate\n",
+    fprintf(out,
+            "%smedian_ns: the median of the repeats; cv: 1.4826 MAD / median, ! where noisy "
+            "(cv > %.0f%% or max > 2 median); not_cr: results not the reference rounded to "
+            "float; dominated_by: a peer row no slower and no less accurate\n",
             lead, 100.0 * BENCH_NOISY_CV);
 }
 
@@ -252,8 +261,9 @@ static int noisy_rows(const bench_row *rows, int n)
 static void markdown_report(FILE *out, const bench_machine *m, const bench_row *rows, int n)
 {
     header_comment(out, "", m);
-    fprintf(out, "\n| kernel | scene | isa | tier | n | median ns | cv | max ULP | not_cr | bound | "
-                 "pareto | dominated by |\n|---|---|---|---|---:|---:|---:|---:|---:|---|---|---|\n");
+    fprintf(out,
+            "\n| kernel | scene | isa | tier | n | median ns | cv | max ULP | not_cr | bound | "
+            "pareto | dominated by |\n|---|---|---|---|---:|---:|---:|---:|---:|---|---|---|\n");
     for (int i = 0; i < n; i++) {
         const bench_row *r = &rows[i];
         char bound[32], peer[40];
@@ -268,7 +278,9 @@ static void markdown_report(FILE *out, const bench_machine *m, const bench_row *
 static void table_report(FILE *out, const bench_machine *m, const bench_row *rows, int n)
 {
     header_comment(out, "# ", m);
-    fprintf(out, "%-11s %-17s %-10s %-8s %8s %9s %8s %8s %6s %7s %6s %6s %11s %7s %7s %9s %-16s %6s %-6s %s\n",
+    fprintf(out,
+            "%-11s %-17s %-10s %-8s %8s %9s %8s %8s %6s %7s %6s %6s %11s %7s %7s %9s %-16s %6s "
+            "%-6s %s\n",
             "kernel", "scene", "isa", "tier", "n", "median_ns", "min", "max", "cv", "Melem/s",
             "xscal", "xlibm", "max_ulp", "mean", "not_cr", "max_rel", "bound", "roof", "pareto",
             "dominated_by");
@@ -276,7 +288,8 @@ static void table_report(FILE *out, const bench_machine *m, const bench_row *row
         table_row(out, &rows[i]);
     int noisy = noisy_rows(rows, n);
     if (noisy)
-        fprintf(out, "# %d of %d rows are noisy (!): rerun with more --repeat, on an idle machine\n",
+        fprintf(out,
+                "# %d of %d rows are noisy (!): rerun with more --repeat, on an idle machine\n",
                 noisy, n);
 }
 

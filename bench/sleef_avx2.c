@@ -12,6 +12,7 @@
 
 /* 8 lanes at a time, calling SLEEF's function directly in the loop (no pointer, no wrapper);
  * the tail through a buffer padded with 1. `expr` computes the vector r from x (and y). */
+/* clang-format off */
 #define SLEEF_LOOP(name, expr)                                                                    \
     static void name(const sc_batch_args *a)                                                      \
     {                                                                                             \
@@ -33,6 +34,7 @@
         _mm256_storeu_ps(br, expr);                                                               \
         memcpy(out + i, br, (n - i) * sizeof(float));                                             \
     }
+/* clang-format on */
 
 /* the first count < 8 elements of p, padded with 1 */
 static void pad_tail(const float *p, float *b, size_t count)
@@ -42,6 +44,7 @@ static void pad_tail(const float *p, float *b, size_t count)
 }
 
 /* kernel, SLEEF's tier, the vector expression */
+/* clang-format off */
 #define SLEEF_FUNCTIONS(X)                                                                        \
     X(pow, u10, Sleef_powf8_u10avx2(x, y))                                                        \
     X(exp, u10, Sleef_expf8_u10avx2(x))                                                           \
@@ -56,11 +59,15 @@ static void pad_tail(const float *p, float *b, size_t count)
 
 #define SLEEF_DEFINE(kernel, tier, expr) SLEEF_LOOP(kernel##_##tier, expr)
 SLEEF_FUNCTIONS(SLEEF_DEFINE)
+/* clang-format on */
 
 #define SLEEF_ROW(kernel, tier, expr) {#kernel, #tier, kernel##_##tier},
 static const bench_sleef sleef_loops[] = {SLEEF_FUNCTIONS(SLEEF_ROW)};
 
-int bench_sleef_available(void) { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
+int bench_sleef_available(void)
+{
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
 
 const char *bench_sleef_absence(void)
 {

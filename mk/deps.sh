@@ -2,7 +2,7 @@
 # Installs the Debian packages the build and the tests need, only those missing.
 # Called by `make deps` (and so by `make all` and `make check`).
 #
-#   required   libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3
+#   required   libcmocka-dev libopenexr-dev pkg-config clang clang-format libclang-rt-14-dev python3
 #              libmpfr-dev
 #              (python3: the end-to-end tests parse the SVG and JSON output with a real parser;
 #              MPFR: the correct-rounding checker of test_exhaustive and `make exhaustive`)
@@ -13,7 +13,7 @@
 # As root, every missing package is installed. Otherwise a missing required package is an error
 # and a missing optional one a notice.
 set -eu
-required="libcmocka-dev libopenexr-dev pkg-config clang libclang-rt-14-dev python3 libmpfr-dev"
+required="libcmocka-dev libopenexr-dev pkg-config clang clang-format libclang-rt-14-dev python3 libmpfr-dev"
 optional="libsleef-dev gcovr"
 
 missing() { # PACKAGES...: prints those not installed

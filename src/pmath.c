@@ -13,15 +13,15 @@ double sc_p_div(sc_prec p, double a, double b) { return sc_round(p, a / b); }
 double sc_p_neg(sc_prec p, double a) { return sc_round(p, -a); }
 
 /* The binary32 result, rounded further to p (a no-op for highp). */
-#define SC_P_FN1(name, ref, f32)                                                                  \
-    double sc_p_##name(sc_prec p, double x)                                                       \
-    {                                                                                             \
-        return p == SC_DOUBLE ? ref(x) : sc_round(p, (double)f32((float)x));                      \
+#define SC_P_FN1(name, ref, f32)                                                                   \
+    double sc_p_##name(sc_prec p, double x)                                                        \
+    {                                                                                              \
+        return p == SC_DOUBLE ? ref(x) : sc_round(p, (double)f32((float)x));                       \
     }
-#define SC_P_FN2(name, ref, f32)                                                                  \
-    double sc_p_##name(sc_prec p, double x, double y)                                             \
-    {                                                                                             \
-        return p == SC_DOUBLE ? ref(x, y) : sc_round(p, (double)f32((float)x, (float)y));         \
+#define SC_P_FN2(name, ref, f32)                                                                   \
+    double sc_p_##name(sc_prec p, double x, double y)                                              \
+    {                                                                                              \
+        return p == SC_DOUBLE ? ref(x, y) : sc_round(p, (double)f32((float)x, (float)y));          \
     }
 
 static double inversesqrt(double x) { return 1.0 / sqrt(x); }
@@ -44,11 +44,11 @@ SC_P_FN2(atan2, atan2, sc_atan2f)
 /* The common functions: the double reference is the GLSL ES §8.3 defining formula evaluated in
  * binary64; the other precisions round the binary32 built-in (exact for abs sign floor ceil min
  * max step, whose results are one of their inputs or an integer). */
-#define SC_P_FN3(name, ref, f32)                                                                  \
-    double sc_p_##name(sc_prec p, double x, double y, double z)                                   \
-    {                                                                                             \
-        return p == SC_DOUBLE ? ref(x, y, z)                                                      \
-                              : sc_round(p, (double)f32((float)x, (float)y, (float)z));           \
+#define SC_P_FN3(name, ref, f32)                                                                   \
+    double sc_p_##name(sc_prec p, double x, double y, double z)                                    \
+    {                                                                                              \
+        return p == SC_DOUBLE ? ref(x, y, z)                                                       \
+                              : sc_round(p, (double)f32((float)x, (float)y, (float)z));            \
     }
 
 static const double pi = 3.14159265358979323846;

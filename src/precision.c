@@ -37,7 +37,7 @@ uint16_t sc_half_from_double(double x)
         return sign | (uint16_t)rint(a * 0x1p24);
     int e;
     frexp(a, &e);
-    e -= 1; /* a = m * 2^e with m in [1, 2) */
+    e -= 1;                            /* a = m * 2^e with m in [1, 2) */
     double q = rint(ldexp(a, 10 - e)); /* 11-bit significand in [1024, 2048] */
     if (q == 2048.0) {
         q = 1024.0;
@@ -76,14 +76,10 @@ double sc_round_lowp(double x)
 double sc_round(sc_prec p, double x)
 {
     switch (p) {
-    case SC_HIGHP:
-        return (double)(float)x;
-    case SC_MEDIUMP:
-        return sc_round_half(x);
-    case SC_LOWP:
-        return sc_round_lowp(x);
-    case SC_DOUBLE:
-        break;
+    case SC_HIGHP: return (double)(float)x;
+    case SC_MEDIUMP: return sc_round_half(x);
+    case SC_LOWP: return sc_round_lowp(x);
+    case SC_DOUBLE: break;
     }
     return x;
 }

@@ -10,10 +10,12 @@
 /* k = 1 − η·η·(1 − d·d) with d = dot(N, I); k < 0 is total internal reflection: the zero
  * vector. Otherwise η·I − (η·d + sqrt(k))·N. */
 #define SC_VEC_DEFINE_REFRACT(T, EACH)                                                             \
-    T T##_refract(T i, T n, float eta) {                                                           \
+    T T##_refract(T i, T n, float eta)                                                             \
+    {                                                                                              \
         float d = T##_dot(n, i);                                                                   \
         float k = 1.0f - eta * eta * (1.0f - d * d);                                               \
-        if (k < 0.0f) return (T){EACH(SC_VEC_ZERO_)};                                              \
+        if (k < 0.0f)                                                                              \
+            return (T){EACH(SC_VEC_ZERO_)};                                                        \
         float s = eta * d + sc_sqrtf(k);                                                           \
         return (T){EACH(SC_VEC_REFRACT_)};                                                         \
     }

@@ -12,7 +12,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: accuracy_table [INPUTS]\n");
         return 2;
     }
-    printf("| function | domain | stated bound (ULP) | measured max (ULP) | mean (ULP) | inputs |\n");
+    printf(
+        "| function | domain | stated bound (ULP) | measured max (ULP) | mean (ULP) | inputs |\n");
     printf("|---|---|---|---|---|---|\n");
     int broken = 0;
     for (int i = 0; i < sc_accuracy_count; i++) {

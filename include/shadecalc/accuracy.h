@@ -29,20 +29,20 @@ typedef struct {
     float (*f2)(float, float);
     double (*ref1)(double);
     double (*ref2)(double, double);
-    double lo[2], hi[2];   /* the domain of each argument for random inputs */
-    int normal_result;     /* 1: only inputs whose reference result is a normal float count */
-    const char *domain;    /* the domain, as the README states it */
-    double bound_ulp;      /* the stated bound */
+    double lo[2], hi[2]; /* the domain of each argument for random inputs */
+    int normal_result;   /* 1: only inputs whose reference result is a normal float count */
+    const char *domain;  /* the domain, as the README states it */
+    double bound_ulp;    /* the stated bound */
 } sc_accuracy_row;
 
 extern const sc_accuracy_row sc_accuracy_table[];
 extern const int sc_accuracy_count;
 
 typedef struct {
-    long inputs;      /* inputs measured inside the domain */
+    long inputs; /* inputs measured inside the domain */
     double max_ulp;
     double mean_ulp;
-    float worst[2];   /* the arguments of the largest error */
+    float worst[2];          /* the arguments of the largest error */
     long special_mismatches; /* special values whose result is not the reference's (NaN = NaN) */
 } sc_accuracy_stats;
 

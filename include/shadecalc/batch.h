@@ -54,7 +54,11 @@ int sc_isa_set(sc_isa isa);
 enum { SC_BATCH_MAX_LIGHTS = 64 }; /* more: split the set, amb_term 0 in all parts but one */
 
 typedef enum { SC_BATCH_DIRECTIONAL, SC_BATCH_POINT, SC_BATCH_SPOT } sc_batch_light_kind;
-typedef enum { SC_BATCH_SPOT_OPENGL, SC_BATCH_SPOT_DIRECTX, SC_BATCH_SPOT_SMOOTHSTEP } sc_batch_spot;
+typedef enum {
+    SC_BATCH_SPOT_OPENGL,
+    SC_BATCH_SPOT_DIRECTX,
+    SC_BATCH_SPOT_SMOOTHSTEP
+} sc_batch_spot;
 
 /* A light as light.h computes it: directional (E_L), point and spot (I_L with inverse-square
  * falloff 1/max(r², 10^-4); at r = 0, l = n). Spot factor of cos θ_s = −l·dir (docs/formulas.md §4):
@@ -172,14 +176,14 @@ typedef struct {
     sc_batch_fn fn;
     sc_batch_ref_fn ref;
     int n_in, n_out;
-    double bound_ulp;   /* the stated bound in ULP, or 0 when stated as relative error */
-    double bound_rel;   /* the stated bound as relative error, or 0 */
-    double bound_abs;   /* besides: absolute error allowed, times the reference's scale */
-    const char *domain; /* the input domain, as the man page states it */
-    double lo[2], hi[2];/* random inputs for x and y (one-argument kernels), or: */
-    sc_batch_gen_fn gen;/* the generator of vector inputs (NULL for x, y kernels) */
-    double ops;         /* AVX2 arithmetic instructions per vector of 8 elements (roofline) */
-    const void *params; /* the parameters the tests and the bench run it with, or NULL */
+    double bound_ulp;    /* the stated bound in ULP, or 0 when stated as relative error */
+    double bound_rel;    /* the stated bound as relative error, or 0 */
+    double bound_abs;    /* besides: absolute error allowed, times the reference's scale */
+    const char *domain;  /* the input domain, as the man page states it */
+    double lo[2], hi[2]; /* random inputs for x and y (one-argument kernels), or: */
+    sc_batch_gen_fn gen; /* the generator of vector inputs (NULL for x, y kernels) */
+    double ops;          /* AVX2 arithmetic instructions per vector of 8 elements (roofline) */
+    const void *params;  /* the parameters the tests and the bench run it with, or NULL */
 } sc_batch_entry;
 
 extern const sc_batch_entry sc_batch_table[];
@@ -191,10 +195,10 @@ void sc_batch_sample(const sc_batch_entry *e, uint64_t *rng, float *in);
 /* ---- accuracy ---- */
 
 typedef struct {
-    double max_ratio;  /* the worst error as a fraction of the stated bound (> 1: broken) */
-    size_t worst;      /* the element where it occurred */
+    double max_ratio;        /* the worst error as a fraction of the stated bound (> 1: broken) */
+    size_t worst;            /* the element where it occurred */
     double max_ulp, sum_ulp; /* ULPs of binary32 at the reference, over finite errors */
-    long count;        /* outputs counted in sum_ulp */
+    long count;              /* outputs counted in sum_ulp */
     double max_rel, max_abs;
 } sc_batch_error;
 
@@ -229,8 +233,8 @@ typedef struct sc_batch_plan sc_batch_plan;
  * with m >= 1, and cook-torrance walter GGX/smith-correlated/schlick with isotropic α >= 10^-4
  * and grey F0), a falloff other than inverse-square (point, spot) or none (directional), a
  * range, more than SC_BATCH_MAX_LIGHTS lights, an unknown tier; or out of memory. */
-sc_batch_plan *sc_batch_plan_compile(const sc_scene *scene, const char *tier, sc_isa isa,
-                                     char *why, size_t size);
+sc_batch_plan *sc_batch_plan_compile(const sc_scene *scene, const char *tier, sc_isa isa, char *why,
+                                     size_t size);
 void sc_batch_plan_free(sc_batch_plan *plan);
 
 /* The table entry (kernel, tier, instruction set, bound) the plan runs. */

@@ -60,17 +60,17 @@ typedef enum { SC_F_SCHLICK, SC_F_EXACT, SC_F_NONE } sc_fresnel;
 typedef struct {
     sc_brdf_kind kind;
     int form;
-    double diff[3];  /* c_diff, ρ_d; oren-nayar: ρ */
-    double spec[3];  /* c_spec, ρ_s */
-    double amb[3];   /* c_amb, the material's ambient colour (docs/formulas.md §6) */
-    double m;        /* phong and blinn-phong exponent */
-    double ax, ay;   /* roughness α (ward, cook-torrance); ax = ay when isotropic */
-    double sigma;    /* oren-nayar σ in radians */
+    double diff[3]; /* c_diff, ρ_d; oren-nayar: ρ */
+    double spec[3]; /* c_spec, ρ_s */
+    double amb[3];  /* c_amb, the material's ambient colour (docs/formulas.md §6) */
+    double m;       /* phong and blinn-phong exponent */
+    double ax, ay;  /* roughness α (ward, cook-torrance); ax = ay when isotropic */
+    double sigma;   /* oren-nayar σ in radians */
     sc_ndf D;
     sc_masking G;
     sc_fresnel F;
-    double f0[3];    /* schlick F0 */
-    double ior;      /* exact Fresnel: relative index of refraction η */
+    double f0[3]; /* schlick F0 */
+    double ior;   /* exact Fresnel: relative index of refraction η */
 } sc_brdf;
 
 /* Orthonormal frame: n unit normal, t tangent (t ⟂ n), b = n × t. */

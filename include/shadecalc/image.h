@@ -79,13 +79,13 @@ typedef enum {
     SC_EXR_COMPRESSION_COUNT
 } sc_exr_compression;
 
-const char *sc_exr_compression_name(sc_exr_compression c); /* NULL out of range */
+const char *sc_exr_compression_name(sc_exr_compression c);               /* NULL out of range */
 int sc_exr_compression_parse(const char *name, sc_exr_compression *out); /* 0, or -1 */
 
 typedef struct {
-    sc_pixel_type type;             /* how channels are stored */
+    sc_pixel_type type; /* how channels are stored */
     sc_exr_compression compression;
-    int threads;                    /* chunks compressed on this many threads; 0: one per core */
+    int threads; /* chunks compressed on this many threads; 0: one per core */
 } sc_exr_options;
 
 /* Writes img as a scanline EXR, ZIP compression, channels stored as `type`, with the string

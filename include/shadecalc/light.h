@@ -41,18 +41,18 @@ typedef enum {
 
 typedef struct {
     sc_atten_kind kind;
-    double sc, sl, sq;       /* clq: 1/(s_c + s_l r + s_q r²) */
-    double r_start, r_end;   /* window */
+    double sc, sl, sq;           /* clq: 1/(s_c + s_l r + s_q r²) */
+    double r_start, r_end;       /* window */
     double f_max, f_c, r_c, s_e; /* pixar (Barzel 1997); k0 = ln(f_c/f_max), k1 = s_e/k0 */
-    double r_max;            /* windowed inverse-square */
+    double r_max;                /* windowed inverse-square */
 } sc_atten;
 
 typedef enum { SC_SPOT_OPENGL, SC_SPOT_DIRECTX, SC_SPOT_SMOOTHSTEP } sc_spot_kind;
 
 typedef struct {
     sc_spot_kind kind;
-    double exponent;  /* opengl, directx */
-    double cutoff;    /* opengl: θ_u in degrees, [0, 90] or 180 */
+    double exponent;     /* opengl, directx */
+    double cutoff;       /* opengl: θ_u in degrees, [0, 90] or 180 */
     double inner, outer; /* directx, smoothstep: half-angles θ_p <= θ_u in degrees */
 } sc_spot;
 
@@ -73,12 +73,12 @@ typedef struct {
 
 /* What a light gives at a surface point, with its intermediates (for --explain). */
 typedef struct {
-    double l[3];   /* unit vector toward the light */
-    double r;      /* distance (0 for directional) */
-    double f_d;    /* distance attenuation (1 for directional) */
-    double spot;   /* spot factor (1 unless a spot) */
-    double cos_s;  /* cos θ_s (spot only) */
-    double E[3];   /* E_L = intensity · f_d · spot */
+    double l[3];  /* unit vector toward the light */
+    double r;     /* distance (0 for directional) */
+    double f_d;   /* distance attenuation (1 for directional) */
+    double spot;  /* spot factor (1 unless a spot) */
+    double cos_s; /* cos θ_s (spot only) */
+    double E[3];  /* E_L = intensity · f_d · spot */
 } sc_light_sample;
 
 /* Defaults: inverse-square attenuation, opengl spot with cutoff 180 (no cone), colours 1. */

@@ -80,9 +80,7 @@ typedef struct {
 #define SC_MAT_ROW4_(c, r) (((m.m[r] * v.x + m.m[4 + r] * v.y) + m.m[8 + r] * v.z) + m.m[12 + r] * v.w)
 // clang-format on
 #define SC_MAT_DEFINE_MUL_VEC(T, V, EACH, ROW)                                                     \
-    static inline V T##_mul_vec(T m, V v) {                                                        \
-        return SC_LITERAL_(V){EACH(ROW)};                                                          \
-    }
+    static inline V T##_mul_vec(T m, V v) { return SC_LITERAL_(V){EACH(ROW)}; }
 SC_MAT_DEFINE_MUL_VEC(sc_mat2, sc_vec2, SC_EACH2, SC_MAT_ROW2_)
 SC_MAT_DEFINE_MUL_VEC(sc_mat3, sc_vec3, SC_EACH3, SC_MAT_ROW3_)
 SC_MAT_DEFINE_MUL_VEC(sc_mat4, sc_vec4, SC_EACH4, SC_MAT_ROW4_)

@@ -43,7 +43,7 @@ typedef struct {
 
 typedef struct {
     const char *title, *xlabel, *ylabel; /* NULL: none */
-    int xlog, ylog; /* log10 axes (cartesian only) */
+    int xlog, ylog;                      /* log10 axes (cartesian only) */
     int polar;
     double ymin, ymax; /* y (or radius) range; NaN: from the data */
     const sc_plot_series *series;
@@ -72,7 +72,7 @@ typedef struct {
     const double *x, *y;                 /* the samples of the two variables, increasing */
     size_t nx, ny;                       /* at least 2 each */
     const double *values;                /* values[j·nx + i] at (x[i], y[j]); y grows upward */
-    sc_tone tone; /* log: six decades at most below the largest value; linear: from 0 */
+    sc_tone tone;    /* log: six decades at most below the largest value; linear: from 0 */
     double exposure; /* stops: the colour scale tops out at max / 2^exposure */
     int sqrt_x;      /* x drawn at √((x − x0)/(x1 − x0)): BRDF Explorer's θ_h² mapping */
 } sc_heatmap;

@@ -85,7 +85,6 @@ void sc_p_refract(sc_prec p, const double *i, const double *nrm, double eta, int
 void sc_p_faceforward(sc_prec p, const double *nrm, const double *i, const double *nref, int n,
                       double *out);
 
-
 void sc_p_matmul(sc_prec p, const double *a, const double *b, int n, double *out);
 void sc_p_mat_vec(sc_prec p, const double *m, const double *v, int n, double *out);
 void sc_p_vec_mat(sc_prec p, const double *v, const double *m, int n, double *out);

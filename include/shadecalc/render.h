@@ -86,12 +86,12 @@ typedef struct {
     const sc_mesh *mesh;       /* normals needed for gouraud and phong, uv for exact */
     const sc_surface *surface; /* exact: the surface the mesh's uv refer to */
     const sc_scene *scene;
-    sc_prec prec;              /* the precision sc_shade computes in */
-    const char *tier;          /* highp: the batch shading kernel's tier (batch.h: accurate,
+    sc_prec prec;     /* the precision sc_shade computes in */
+    const char *tier; /* highp: the batch shading kernel's tier (batch.h: accurate,
                                   bits12, bits8); NULL: accurate */
     sc_shading shading;
     sc_camera camera;
-    int threads;               /* 0: one per online core */
+    int threads;                     /* 0: one per online core */
     sc_render_progress_fn *progress; /* or NULL */
     void *progress_ctx;
 } sc_render_params;

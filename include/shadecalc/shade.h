@@ -62,10 +62,10 @@ typedef struct {
 } sc_light_terms;
 
 typedef struct {
-    double L[3];          /* the result */
-    double ambient[3];    /* the global ambient term */
+    double L[3];                     /* the result */
+    double ambient[3];               /* the global ambient term */
     double primary[3], secondary[3]; /* opengl separate specular: the two colours */
-    sc_light_terms *per_light; /* filled when not NULL: n_lights entries */
+    sc_light_terms *per_light;       /* filled when not NULL: n_lights entries */
 } sc_shade_result;
 
 /* Where to shade: position, unit normal, unit direction to the viewer, tangent (or NULL). */

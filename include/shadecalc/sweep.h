@@ -84,8 +84,8 @@ void sc_sweep_grid_free(sc_sweep_grid *g);
 /* Copies text to out, replacing each $NAME (the longest identifier after the $) and ${NAME} by
  * the value of that variable in `values` (shortest round-trip decimal). Returns 0, or -1 with
  * err: an unknown variable, a $ not followed by a name, or out too small. */
-int sc_sweep_substitute(const char *text, const sc_sweep_grid *g, const double *values,
-                        char *out, size_t size, char *err, size_t errsize);
+int sc_sweep_substitute(const char *text, const sc_sweep_grid *g, const double *values, char *out,
+                        size_t size, char *err, size_t errsize);
 
 typedef enum { SC_SWEEP_CSV, SC_SWEEP_TSV, SC_SWEEP_JSONL } sc_sweep_format;
 
@@ -118,8 +118,8 @@ typedef struct {
                 size_t errsize);
     void *user;
     /* optional: sees every row; 0, or -1 with err to stop */
-    int (*consume)(void *user, uint64_t row, const double *vars, const double *results,
-                   char *err, size_t errsize);
+    int (*consume)(void *user, uint64_t row, const double *vars, const double *results, char *err,
+                   size_t errsize);
     const sc_sweep_table *table; /* optional: rows written to out as text */
     FILE *out;
     /* optional: rows done so far, after each block */

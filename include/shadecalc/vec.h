@@ -91,26 +91,18 @@ typedef struct {
 
 /* What both float and double vectors have: add sub scale dot length normalize reflect. */
 #define SC_VEC_DEFINE_CORE(T, S, EACH, SUM, SQRT)                                                  \
-    static inline T T##_add(T a, T b) {                                                            \
-        return SC_LITERAL_(T){EACH(SC_VEC_ADD_)};                                                  \
-    }                                                                                              \
-    static inline T T##_sub(T a, T b) {                                                            \
-        return SC_LITERAL_(T){EACH(SC_VEC_SUB_)};                                                  \
-    }                                                                                              \
-    static inline T T##_scale(T a, S s) {                                                          \
-        return SC_LITERAL_(T){EACH(SC_VEC_SCALE_)};                                                \
-    }                                                                                              \
-    static inline S T##_dot(T a, T b) {                                                            \
-        return SUM(SC_VEC_MUL_);                                                                   \
-    }                                                                                              \
-    static inline S T##_length(T a) {                                                              \
-        return SQRT(T##_dot(a, a));                                                                \
-    }                                                                                              \
-    static inline T T##_normalize(T a) {                                                           \
+    static inline T T##_add(T a, T b) { return SC_LITERAL_(T){EACH(SC_VEC_ADD_)}; }                \
+    static inline T T##_sub(T a, T b) { return SC_LITERAL_(T){EACH(SC_VEC_SUB_)}; }                \
+    static inline T T##_scale(T a, S s) { return SC_LITERAL_(T){EACH(SC_VEC_SCALE_)}; }            \
+    static inline S T##_dot(T a, T b) { return SUM(SC_VEC_MUL_); }                                 \
+    static inline S T##_length(T a) { return SQRT(T##_dot(a, a)); }                                \
+    static inline T T##_normalize(T a)                                                             \
+    {                                                                                              \
         S len = T##_length(a);                                                                     \
         return SC_LITERAL_(T){EACH(SC_VEC_DIV_LEN_)};                                              \
     }                                                                                              \
-    static inline T T##_reflect(T i, T n) {                                                        \
+    static inline T T##_reflect(T i, T n)                                                          \
+    {                                                                                              \
         S two_d = (S)2 * T##_dot(n, i);                                                            \
         return SC_LITERAL_(T){EACH(SC_VEC_REFLECT_)};                                              \
     }
@@ -118,37 +110,18 @@ typedef struct {
 /* The rest of the GLSL set, for the float vectors. */
 #define SC_VEC_DEFINE_FLOAT(T, EACH, SUM)                                                          \
     SC_VEC_DEFINE_CORE(T, float, EACH, SUM, sc_sqrtf)                                              \
-    static inline T T##_splat(float s) {                                                           \
-        return SC_LITERAL_(T){EACH(SC_VEC_SPLAT_)};                                                \
-    }                                                                                              \
-    static inline T T##_mul(T a, T b) {                                                            \
-        return SC_LITERAL_(T){EACH(SC_VEC_MUL_)};                                                  \
-    }                                                                                              \
-    static inline T T##_div(T a, T b) {                                                            \
-        return SC_LITERAL_(T){EACH(SC_VEC_DIV_)};                                                  \
-    }                                                                                              \
-    static inline T T##_neg(T a) {                                                                 \
-        return SC_LITERAL_(T){EACH(SC_VEC_NEG_)};                                                  \
-    }                                                                                              \
-    static inline T T##_min(T a, T b) {                                                            \
-        return SC_LITERAL_(T){EACH(SC_VEC_MIN_)};                                                  \
-    }                                                                                              \
-    static inline T T##_max(T a, T b) {                                                            \
-        return SC_LITERAL_(T){EACH(SC_VEC_MAX_)};                                                  \
-    }                                                                                              \
-    static inline T T##_clamp(T x, T lo, T hi) {                                                   \
-        return SC_LITERAL_(T){EACH(SC_VEC_CLAMP_)};                                                \
-    }                                                                                              \
-    static inline T T##_mix(T a, T b, T t) {                                                       \
-        return SC_LITERAL_(T){EACH(SC_VEC_MIX_)};                                                  \
-    }                                                                                              \
-    static inline T T##_abs(T a) {                                                                 \
-        return SC_LITERAL_(T){EACH(SC_VEC_ABS_)};                                                  \
-    }                                                                                              \
-    static inline float T##_distance(T a, T b) {                                                   \
-        return T##_length(T##_sub(a, b));                                                          \
-    }                                                                                              \
-    static inline T T##_faceforward(T n, T i, T nref) {                                            \
+    static inline T T##_splat(float s) { return SC_LITERAL_(T){EACH(SC_VEC_SPLAT_)}; }             \
+    static inline T T##_mul(T a, T b) { return SC_LITERAL_(T){EACH(SC_VEC_MUL_)}; }                \
+    static inline T T##_div(T a, T b) { return SC_LITERAL_(T){EACH(SC_VEC_DIV_)}; }                \
+    static inline T T##_neg(T a) { return SC_LITERAL_(T){EACH(SC_VEC_NEG_)}; }                     \
+    static inline T T##_min(T a, T b) { return SC_LITERAL_(T){EACH(SC_VEC_MIN_)}; }                \
+    static inline T T##_max(T a, T b) { return SC_LITERAL_(T){EACH(SC_VEC_MAX_)}; }                \
+    static inline T T##_clamp(T x, T lo, T hi) { return SC_LITERAL_(T){EACH(SC_VEC_CLAMP_)}; }     \
+    static inline T T##_mix(T a, T b, T t) { return SC_LITERAL_(T){EACH(SC_VEC_MIX_)}; }           \
+    static inline T T##_abs(T a) { return SC_LITERAL_(T){EACH(SC_VEC_ABS_)}; }                     \
+    static inline float T##_distance(T a, T b) { return T##_length(T##_sub(a, b)); }               \
+    static inline T T##_faceforward(T n, T i, T nref)                                              \
+    {                                                                                              \
         int keep = T##_dot(nref, i) < 0.0f;                                                        \
         return SC_LITERAL_(T){EACH(SC_VEC_FACE_)};                                                 \
     }                                                                                              \
@@ -156,7 +129,8 @@ typedef struct {
 
 /* cross(a, b) = (a.y·b.z − b.y·a.z, a.z·b.x − b.z·a.x, a.x·b.y − b.x·a.y), as GLSL ES. */
 #define SC_VEC_DEFINE_CROSS(T)                                                                     \
-    static inline T T##_cross(T a, T b) {                                                          \
+    static inline T T##_cross(T a, T b)                                                            \
+    {                                                                                              \
         return SC_LITERAL_(T){a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x,                        \
                               a.x * b.y - b.x * a.y};                                              \
     }
@@ -168,16 +142,17 @@ SC_VEC_DEFINE_CROSS(sc_vec3)
 SC_VEC_DEFINE_CORE(sc_dvec3, double, SC_EACH3, SC_SUM3, sqrt)
 SC_VEC_DEFINE_CROSS(sc_dvec3)
 
-static inline sc_vec2 sc_vec2_make(float x, float y) {
-    return SC_LITERAL_(sc_vec2){x, y};
-}
-static inline sc_vec3 sc_vec3_make(float x, float y, float z) {
+static inline sc_vec2 sc_vec2_make(float x, float y) { return SC_LITERAL_(sc_vec2){x, y}; }
+static inline sc_vec3 sc_vec3_make(float x, float y, float z)
+{
     return SC_LITERAL_(sc_vec3){x, y, z};
 }
-static inline sc_vec4 sc_vec4_make(float x, float y, float z, float w) {
+static inline sc_vec4 sc_vec4_make(float x, float y, float z, float w)
+{
     return SC_LITERAL_(sc_vec4){x, y, z, w};
 }
-static inline sc_dvec3 sc_dvec3_make(double x, double y, double z) {
+static inline sc_dvec3 sc_dvec3_make(double x, double y, double z)
+{
     return SC_LITERAL_(sc_dvec3){x, y, z};
 }
 

@@ -17,8 +17,7 @@ static int stated(const sc_batch_entry *e, double ref)
 /* got against ref as a fraction of e's bound: ULPs (ulp, already measured), or relative error
  * with the absolute allowance times the reference's scale. Both NaN, or the same overflow: 0.
  * A scale of +Inf marks an element outside the stated domain (a discontinuity): 0. */
-static double bound_ratio(const sc_batch_entry *e, float got, double ref, double ulp,
-                          double scale)
+static double bound_ratio(const sc_batch_entry *e, float got, double ref, double ulp, double scale)
 {
     if (isnan(ref) && isnan(got))
         return 0.0;

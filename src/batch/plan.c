@@ -39,16 +39,17 @@ static int ggx_fits(const sc_brdf *b, char *why, size_t size)
 {
     if (b->form != SC_CT_WALTER || b->D != SC_D_GGX || b->G != SC_G_SMITH_CORRELATED ||
         b->F != SC_F_SCHLICK)
-        return refuse(why, size, "cook-torrance: the kernel computes form=walter D=ggx "
-                                 "G=smith-correlated F=schlick only");
+        return refuse(why, size,
+                      "cook-torrance: the kernel computes form=walter D=ggx "
+                      "G=smith-correlated F=schlick only");
     if (b->ax != b->ay)
         return refuse(why, size, "cook-torrance: anisotropic roughness (ax=%g ay=%g)", b->ax,
                       b->ay);
     if (!(b->ax >= 1e-4))
         return refuse(why, size, "cook-torrance: alpha=%g below 1e-4", b->ax);
     if (!same3(b->f0))
-        return refuse(why, size, "cook-torrance: F0 is not grey (%g,%g,%g)", b->f0[0],
-                      b->f0[1], b->f0[2]);
+        return refuse(why, size, "cook-torrance: F0 is not grey (%g,%g,%g)", b->f0[0], b->f0[1],
+                      b->f0[2]);
     return 1;
 }
 
@@ -65,8 +66,10 @@ static int brdf_fits(const sc_brdf *b, sc_batch_scene *out, char *why, size_t si
         return 1;
     case SC_BRDF_COOK_TORRANCE: out->brdf = SC_BATCH_GGX; return ggx_fits(b, why, size);
     default:
-        return refuse(why, size, "brdf %s: the kernel computes lambert, blinn-phong and "
-                                 "cook-torrance (GGX)", sc_brdf_kind_name(b->kind));
+        return refuse(why, size,
+                      "brdf %s: the kernel computes lambert, blinn-phong and "
+                      "cook-torrance (GGX)",
+                      sc_brdf_kind_name(b->kind));
     }
 }
 
@@ -103,8 +106,10 @@ static int light_fits(const sc_light *l, int k, sc_batch_light *out, char *why, 
     if (isfinite(l->range))
         return refuse(why, size, "light %d: a range (direct3d9) is not in the kernel", k + 1);
     if (l->atten.kind != (directional ? SC_ATTEN_NONE : SC_ATTEN_INVERSE_SQUARE))
-        return refuse(why, size, "light %d: the kernel's falloff is inverse-square for point "
-                                 "and spot lights, none for directional ones", k + 1);
+        return refuse(why, size,
+                      "light %d: the kernel's falloff is inverse-square for point "
+                      "and spot lights, none for directional ones",
+                      k + 1);
     out->kind = kinds[l->kind];
     unit_float(l->dir, out->dir);
     for (int c = 0; c < 3; c++) {
@@ -122,8 +127,9 @@ static int uniforms_of(const sc_scene *s, sc_batch_scene *out, char *why, size_t
 {
     const sc_brdf *b = &s->model.brdf;
     if (s->model.kind != SC_MODEL_BRDF)
-        return refuse(why, size, "the legacy models (ads, opengl, direct3d9) are not in the "
-                                 "kernel");
+        return refuse(why, size,
+                      "the legacy models (ads, opengl, direct3d9) are not in the "
+                      "kernel");
     if (s->n_lights > SC_BATCH_MAX_LIGHTS)
         return refuse(why, size, "%d lights: the kernel takes at most %d", s->n_lights,
                       SC_BATCH_MAX_LIGHTS);
@@ -159,13 +165,12 @@ static const sc_batch_entry *shade_kernel(const char *tier, sc_isa isa)
     return NULL;
 }
 
-sc_batch_plan *sc_batch_plan_compile(const sc_scene *scene, const char *tier, sc_isa isa,
-                                     char *why, size_t size)
+sc_batch_plan *sc_batch_plan_compile(const sc_scene *scene, const char *tier, sc_isa isa, char *why,
+                                     size_t size)
 {
     const sc_batch_entry *e = shade_kernel(tier, isa);
     if (!e) {
-        refuse(why, size, "tier %s: the shading kernel's tiers are accurate, bits12, bits8",
-               tier);
+        refuse(why, size, "tier %s: the shading kernel's tiers are accurate, bits12, bits8", tier);
         return NULL;
     }
     sc_batch_plan *plan = calloc(1, sizeof *plan);
@@ -189,6 +194,9 @@ void sc_batch_plan_shade(const sc_batch_plan *plan, const float *const in[9], fl
                          size_t n)
 {
     sc_batch_args a = {{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8]},
-                       {out[0], out[1], out[2]}, n, &plan->uniforms, NULL};
+                       {out[0], out[1], out[2]},
+                       n,
+                       &plan->uniforms,
+                       NULL};
     plan->entry->fn(&a);
 }

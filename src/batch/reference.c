@@ -11,12 +11,12 @@
 #include "shadecalc/light.h"
 #include "shadecalc/vec.h"
 
-#define REF1(name, expr)                                                                          \
-    void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out)                       \
-    {                                                                                             \
-        double x = (double)a->in[0][i];                                                           \
-        out[0] = (expr);                                                                          \
-        out[1] = 1.0;                                                                             \
+#define REF1(name, expr)                                                                           \
+    void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out)                        \
+    {                                                                                              \
+        double x = (double)a->in[0][i];                                                            \
+        out[0] = (expr);                                                                           \
+        out[1] = 1.0;                                                                              \
     }
 REF1(exp2, exp2(x))
 REF1(exp, exp(x))
@@ -70,7 +70,8 @@ void sc_batch_ref_reflect(const sc_batch_args *a, size_t i, double *out)
     out[0] = r.x;
     out[1] = r.y;
     out[2] = r.z;
-    out[3] = fmax(fabs(I.x) + k * fabs(N.x), fmax(fabs(I.y) + k * fabs(N.y), fabs(I.z) + k * fabs(N.z)));
+    out[3] = fmax(fabs(I.x) + k * fabs(N.x),
+                  fmax(fabs(I.y) + k * fabs(N.y), fabs(I.z) + k * fabs(N.z)));
 }
 
 void sc_batch_ref_normalize(const sc_batch_args *a, size_t i, double *out)
@@ -106,7 +107,10 @@ static void scene_brdf(const sc_batch_scene *s, sc_brdf *b)
     b->F = SC_F_SCHLICK;
 }
 
-static double degrees_of(double cosine) { return acos(fmax(-1.0, fmin(1.0, cosine))) * 57.29577951308232; }
+static double degrees_of(double cosine)
+{
+    return acos(fmax(-1.0, fmin(1.0, cosine))) * 57.29577951308232;
+}
 
 /* The batch light as light.h's light: the reference evaluates it with sc_light_eval. */
 static void light_of(const sc_batch_light *b, sc_light *out)
@@ -256,8 +260,9 @@ void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, int n_sp
         sc_batch_light *lt = &out->lights[out->n_lights++];
         double a = 2.399963 * k; /* golden-angle spread around +y */
         double d[3] = {0.6 * cos(a), 0.8, 0.6 * sin(a)};
-        lt->kind = k < n_dir ? SC_BATCH_DIRECTIONAL : k < n_dir + n_point ? SC_BATCH_POINT
-                                                                         : SC_BATCH_SPOT;
+        lt->kind = k < n_dir             ? SC_BATCH_DIRECTIONAL
+                   : k < n_dir + n_point ? SC_BATCH_POINT
+                                         : SC_BATCH_SPOT;
         for (int c = 0; c < 3; c++) {
             lt->pos[c] = (float)(4.0 * d[c]);
             lt->dir[c] = (float)(lt->kind == SC_BATCH_SPOT ? -d[c] : d[c]); /* spots aim back */

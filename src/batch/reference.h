@@ -4,15 +4,17 @@
 
 #include "shadecalc/batch.h"
 
+/* clang-format off */
 #define SC_BATCH_REFS(X)                                                                          \
     X(exp2) X(exp) X(log2) X(log) X(pow) X(inversesqrt) X(sqrt) X(dot) X(reflect) X(normalize)    \
     X(length) X(shade)
 #define SC_DECLARE_REF(name) void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out);
 SC_BATCH_REFS(SC_DECLARE_REF)
+/* clang-format on */
 
-void sc_batch_gen_pair(uint64_t *rng, float *in);   /* two vectors of magnitude 2^±8 */
+void sc_batch_gen_pair(uint64_t *rng, float *in);    /* two vectors of magnitude 2^±8 */
 void sc_batch_gen_reflect(uint64_t *rng, float *in); /* I of magnitude 2^±8, N unit */
-void sc_batch_gen_vector(uint64_t *rng, float *in); /* one vector of magnitude 2^±60 */
-void sc_batch_gen_shade(uint64_t *rng, float *in);  /* n, v (|cos θ_o| >= 2^-6), p in [−3, 3]³ */
+void sc_batch_gen_vector(uint64_t *rng, float *in);  /* one vector of magnitude 2^±60 */
+void sc_batch_gen_shade(uint64_t *rng, float *in); /* n, v (|cos θ_o| >= 2^-6), p in [−3, 3]³ */
 
 #endif

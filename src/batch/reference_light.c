@@ -15,8 +15,8 @@ static const double pi = 3.14159265358979323846;
 static void atten_ref(sc_atten_kind kind, const sc_batch_args *a, size_t i, double *out)
 {
     const sc_batch_atten_params *p = a->params;
-    sc_atten at = {kind, p->sc, p->sl, p->sq, p->r_start, p->r_end, p->f_max, p->f_c, p->r_c,
-                   p->s_e, p->r_max};
+    sc_atten at = {kind,     p->sc,  p->sl,  p->sq,  p->r_start, p->r_end,
+                   p->f_max, p->f_c, p->r_c, p->s_e, p->r_max};
     out[0] = sc_atten_eval(SC_DOUBLE, &at, (double)a->in[0][i]);
     out[1] = 1.0;
 }
@@ -29,7 +29,7 @@ static void spot_ref(sc_spot_kind kind, const sc_batch_args *a, size_t i, double
     out[1] = 1.0;
 }
 
-#define REF_OF(name, fn, kind)                                                                    \
+#define REF_OF(name, fn, kind)                                                                     \
     void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out) { fn(kind, a, i, out); }
 REF_OF(atten_none, atten_ref, SC_ATTEN_NONE)
 REF_OF(atten_invsq, atten_ref, SC_ATTEN_INVERSE_SQUARE)
@@ -86,7 +86,7 @@ static double lobe_peak(const sc_brdf *b, double cos_i)
     if (b->kind == SC_BRDF_PHONG)
         return b->form == SC_PHONG_NORMALIZED ? (b->m + 2.0) / (2.0 * pi)
                : b->form == SC_PHONG_ORIGINAL ? 1.0 / (pi * fmax(cos_i, 1e-6))
-                                               : 1.0 / pi;
+                                              : 1.0 / pi;
     if (b->kind == SC_BRDF_BLINN_PHONG)
         return b->form == SC_BLINN_PLAIN ? 1.0 : (b->m + 8.0) / (8.0 * pi);
     return 0.0;
@@ -178,15 +178,29 @@ void sc_batch_gen_brdf(uint64_t *rng, float *in)
 
 /* ---- the rows' parameters ---- */
 
-const sc_batch_atten_params sc_batch_test_atten = {
-    .sc = 1.0f, .sl = 0.5f, .sq = 0.25f, .r_start = 1.0f, .r_end = 10.0f,
-    .f_max = 4.0f, .f_c = 1.0f, .r_c = 2.0f, .s_e = 2.0f, .r_max = 10.0f};
+const sc_batch_atten_params sc_batch_test_atten = {.sc = 1.0f,
+                                                   .sl = 0.5f,
+                                                   .sq = 0.25f,
+                                                   .r_start = 1.0f,
+                                                   .r_end = 10.0f,
+                                                   .f_max = 4.0f,
+                                                   .f_c = 1.0f,
+                                                   .r_c = 2.0f,
+                                                   .s_e = 2.0f,
+                                                   .r_max = 10.0f};
 
 const sc_batch_spot_params sc_batch_test_spot = {
     .exponent = 8.0f, .cutoff = 45.0f, .inner = 20.0f, .outer = 40.0f};
 
-const sc_batch_brdf_params sc_batch_test_brdf = {
-    .model = SC_BRDF_COOK_TORRANCE, .form = SC_CT_WALTER, .D = SC_D_GGX,
-    .G = SC_G_SMITH_CORRELATED, .F = SC_F_SCHLICK, .diff = {0.8f, 0.5f, 0.2f},
-    .spec = {0.2f, 0.3f, 0.4f}, .f0 = {0.04f, 0.5f, 0.9f}, .m = 32.0f, .alpha = 0.3f,
-    .sigma = 0.5f, .ior = 1.5f};
+const sc_batch_brdf_params sc_batch_test_brdf = {.model = SC_BRDF_COOK_TORRANCE,
+                                                 .form = SC_CT_WALTER,
+                                                 .D = SC_D_GGX,
+                                                 .G = SC_G_SMITH_CORRELATED,
+                                                 .F = SC_F_SCHLICK,
+                                                 .diff = {0.8f, 0.5f, 0.2f},
+                                                 .spec = {0.2f, 0.3f, 0.4f},
+                                                 .f0 = {0.04f, 0.5f, 0.9f},
+                                                 .m = 32.0f,
+                                                 .alpha = 0.3f,
+                                                 .sigma = 0.5f,
+                                                 .ior = 1.5f};

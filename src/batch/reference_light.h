@@ -7,10 +7,12 @@
 #include "shadecalc/batch.h"
 #include "shadecalc/brdf.h"
 
+/* clang-format off */
 #define SC_BATCH_REFS_LIGHT(X)                                                                    \
     X(atten_none) X(atten_invsq) X(atten_clq) X(atten_window) X(atten_pixar) X(atten_windowed)   \
     X(spot_opengl) X(spot_directx) X(spot_smoothstep) X(brdf)
 SC_BATCH_REFS_LIGHT(SC_DECLARE_REF)
+/* clang-format on */
 
 /* l, v, n in random directions, magnitudes 2^±30, |cos θ_i|, |cos θ_o| >= 2^-6 (most above
  * the horizon) */

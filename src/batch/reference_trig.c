@@ -6,11 +6,11 @@
 
 #include "batch/reference_trig.h"
 
-#define REF1(name)                                                                                \
-    void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out)                       \
-    {                                                                                             \
-        out[0] = name((double)a->in[0][i]);                                                       \
-        out[1] = 1.0;                                                                             \
+#define REF1(name)                                                                                 \
+    void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out)                        \
+    {                                                                                              \
+        out[0] = name((double)a->in[0][i]);                                                        \
+        out[1] = 1.0;                                                                              \
     }
 REF1(sin)
 REF1(cos)

@@ -10,17 +10,30 @@
 #include "simd/kernels.h"
 
 /* One row per instruction set: the same kernel, tier, bound and domain. */
-#define ENTRY_P(k, t, isa_enum, isa, nin, nout, ulp, rel, abs_, dom, lo0, hi0, lo1, hi1, gen, ops,  \
-                params)                                                                           \
-    {#k, #t, isa_enum, sc_batch_##k##_##t##_##isa, sc_batch_ref_##k, nin, nout, ulp, rel, abs_,   \
-     dom, {lo0, lo1}, {hi0, hi1}, gen, ops, params},
+#define ENTRY_P(k, t, isa_enum, isa, nin, nout, ulp, rel, abs_, dom, lo0, hi0, lo1, hi1, gen, ops, \
+                params)                                                                            \
+    {#k,                                                                                           \
+     #t,                                                                                           \
+     isa_enum,                                                                                     \
+     sc_batch_##k##_##t##_##isa,                                                                   \
+     sc_batch_ref_##k,                                                                             \
+     nin,                                                                                          \
+     nout,                                                                                         \
+     ulp,                                                                                          \
+     rel,                                                                                          \
+     abs_,                                                                                         \
+     dom,                                                                                          \
+     {lo0, lo1},                                                                                   \
+     {hi0, hi1},                                                                                   \
+     gen,                                                                                          \
+     ops,                                                                                          \
+     params},
 #define ENTRY(...) ENTRY_P(__VA_ARGS__, NULL)
 /* ROWS: a kernel without parameters; ROWS_P: with the parameters of its tests (last). */
 #ifdef SC_HAVE_X86
-#define ROWS_WITH(entry, k, t, ...)                                                               \
-    entry(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__)                                               \
-    entry(k, t, SC_ISA_SSE41, sse41, __VA_ARGS__)                                                 \
-    entry(k, t, SC_ISA_AVX2, avx2, __VA_ARGS__)
+#define ROWS_WITH(entry, k, t, ...)                                                                \
+    entry(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__) entry(k, t, SC_ISA_SSE41, sse41, __VA_ARGS__)  \
+        entry(k, t, SC_ISA_AVX2, avx2, __VA_ARGS__)
 #else
 #define ROWS_WITH(entry, k, t, ...) entry(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__)
 #endif

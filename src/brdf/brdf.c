@@ -6,7 +6,7 @@
 #include "brdf/brdf_internal.h"
 #include "shadecalc/light.h"
 
-static const char *const kind_names[] = {"lambert", "phong", "blinn-phong",
+static const char *const kind_names[] = {"lambert", "phong",      "blinn-phong",
                                          "ward",    "oren-nayar", "cook-torrance"};
 static const char *const form_names[][4] = {
     {"default", NULL},
@@ -36,9 +36,9 @@ void sc_brdf_init(sc_brdf *b, sc_brdf_kind kind)
     if (kind == SC_BRDF_PHONG)
         b->form = SC_PHONG_NORMALIZED;
     /* cook-torrance takes its specular colour from F (F0): c_spec is a plain multiplier */
-    double spec = kind == SC_BRDF_COOK_TORRANCE                               ? 1.0
+    double spec = kind == SC_BRDF_COOK_TORRANCE                           ? 1.0
                   : kind == SC_BRDF_LAMBERT || kind == SC_BRDF_OREN_NAYAR ? 0.0
-                                                                            : 0.2;
+                                                                          : 0.2;
     for (int c = 0; c < 3; c++) {
         b->diff[c] = 0.8;
         b->spec[c] = spec;
@@ -142,8 +142,8 @@ void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const doub
         return; /* below the horizon: f = 0 */
     static void (*const models[])(sc_prec, const sc_brdf *, const brdf_geometry *,
                                   sc_brdf_terms *) = {
-        lambert, sc_brdf_phong, sc_brdf_blinn_phong, sc_brdf_ward, sc_brdf_oren_nayar,
-        sc_brdf_cook_torrance};
+        lambert,      sc_brdf_phong,      sc_brdf_blinn_phong,
+        sc_brdf_ward, sc_brdf_oren_nayar, sc_brdf_cook_torrance};
     models[b->kind](p, b, &g, out);
     for (int c = 0; c < 3; c++)
         out->f[c] = sc_p_add(p, out->diffuse[c], out->specular[c]);
@@ -168,9 +168,9 @@ static int validate_colour(const char *key, const double c[3], char *msg, size_t
 int sc_brdf_check_range(sc_prec p, const sc_brdf *b, char *msg, size_t size)
 {
     double sigma_deg = b->sigma * 180.0 / SC_PI;
-    const sc_param params[] = {{"diff", b->diff, 3}, {"spec", b->spec, 3},  {"amb", b->amb, 3},
-                               {"m", &b->m, 1},      {"alpha", &b->ax, 1}, {"ay", &b->ay, 1},
-                               {"sigma", &sigma_deg, 1}, {"f0", b->f0, 3}, {"ior", &b->ior, 1}};
+    const sc_param params[] = {{"diff", b->diff, 3},     {"spec", b->spec, 3}, {"amb", b->amb, 3},
+                               {"m", &b->m, 1},          {"alpha", &b->ax, 1}, {"ay", &b->ay, 1},
+                               {"sigma", &sigma_deg, 1}, {"f0", b->f0, 3},     {"ior", &b->ior, 1}};
     return sc_params_in_range(p, params, (int)(sizeof params / sizeof params[0]), msg, size);
 }
 
@@ -178,7 +178,8 @@ int sc_brdf_validate(const sc_brdf *b, char *msg, size_t size)
 {
     if (validate_colour("diff", b->diff, msg, size) < 0 ||
         validate_colour("spec", b->spec, msg, size) < 0 ||
-        validate_colour("amb", b->amb, msg, size) < 0 || validate_colour("f0", b->f0, msg, size) < 0)
+        validate_colour("amb", b->amb, msg, size) < 0 ||
+        validate_colour("f0", b->f0, msg, size) < 0)
         return -1;
     if (!(b->m >= 0.0))
         return out_of_range(msg, size, "m", b->m, ">= 0");

@@ -23,12 +23,10 @@ typedef struct {
 } brdf_geometry;
 
 void sc_brdf_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out);
-void sc_brdf_blinn_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
-                         sc_brdf_terms *out);
+void sc_brdf_blinn_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out);
 void sc_brdf_ward(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out);
 void sc_brdf_oren_nayar(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out);
-void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
-                           sc_brdf_terms *out);
+void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out);
 
 /* x^y for the cosine lobes: pow(0, 0) = 1, a non-positive base gives 0 for y > 0. */
 double sc_lobe_pow(sc_prec p, double x, double y);

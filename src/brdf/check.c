@@ -126,8 +126,8 @@ static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], do
     const double floor_kink[1] = {acos(1e-6)};
     int nt = composite_nodes(bp, breakpoints(0.0, pi / 2.0, theta_i, floor_kink, 1, panel_exp, bp),
                              order, th, tw);
-    int np = composite_nodes(bp, breakpoints(0.0, 2.0 * pi, pi, phi_kinks, 2, panel_exp, bp),
-                             order, ph, pw);
+    int np = composite_nodes(bp, breakpoints(0.0, 2.0 * pi, pi, phi_kinks, 2, panel_exp, bp), order,
+                             ph, pw);
     memset(out, 0, 3 * sizeof *out);
     for (int i = 0; i < nt; i++) {
         double st = sin(th[i]), ct = cos(th[i]);

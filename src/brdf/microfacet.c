@@ -93,8 +93,7 @@ static void fresnel(sc_prec p, const sc_brdf *b, const brdf_geometry *g, double 
         F[k] = b->F == SC_F_SCHLICK ? Q(Q(b->f0[k]) + Q(Q(1.0 - Q(b->f0[k])) * m5)) : exact;
 }
 
-void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
-                           sc_brdf_terms *out)
+void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out)
 {
     sc_scale3(p, b->diff, Q(1.0 / SC_PI), out->diffuse);
     roughness a = {sc_alpha_floor(p, b->ax), sc_alpha_floor(p, b->ay)};

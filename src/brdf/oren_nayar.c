@@ -84,5 +84,6 @@ void sc_brdf_oren_nayar(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_
                   Q(1.0 - Q(cdp * Q(two_beta_pi * two_beta_pi))));
     f2 = f2 > 0.0 ? f2 : 0.0; /* 2β/π rounded above 1 (mediump, lowp) must not make it negative */
     for (int c = 0; c < 3; c++)
-        out->diffuse[c] = Q(out->diffuse[c] + sc_mul_reach(p, Q(Q(b->diff[c]) * Q(b->diff[c])), f2));
+        out->diffuse[c] = Q(out->diffuse[c] +
+                            sc_mul_reach(p, Q(Q(b->diff[c]) * Q(b->diff[c])), f2));
 }

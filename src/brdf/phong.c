@@ -33,8 +33,7 @@ void sc_brdf_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_
     sc_scale3(p, b->spec, scale, out->specular);
 }
 
-void sc_brdf_blinn_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
-                         sc_brdf_terms *out)
+void sc_brdf_blinn_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out)
 {
     add_diffuse(p, b, out);
     double lobe = sc_lobe_pow(p, g->cos_h, b->m);

@@ -49,8 +49,7 @@ int sc_getopt(int argc, char **argv, const char *optstring, const struct option 
  * whose extension is another image format (.png, .jpg, .pdf, .svg, .exr, ...) would hold what
  * its name does not say, so it is refused with a message naming cmd and option (USAGE);
  * any other name, and "-", is OK. */
-int sc_check_output_name(const char *cmd, const char *option, const char *path,
-                         const char *format);
+int sc_check_output_name(const char *cmd, const char *option, const char *path, const char *format);
 
 /* Strict number parsing: the whole string must be a number. Returns 0 on success, -1 if not. */
 int sc_parse_double(const char *s, double *out);

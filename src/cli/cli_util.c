@@ -182,11 +182,10 @@ int sc_usage_error(const char *cmd, char **argv, int optopt)
     return SC_EXIT_USAGE;
 }
 
-int sc_check_output_name(const char *cmd, const char *option, const char *path,
-                         const char *format)
+int sc_check_output_name(const char *cmd, const char *option, const char *path, const char *format)
 {
-    static const char *const images[] = {"png", "jpg", "jpeg", "gif", "bmp", "tif", "tiff",
-                                         "webp", "pdf", "ppm", "hdr", "svg", "exr", "eps"};
+    static const char *const images[] = {"png",  "jpg", "jpeg", "gif", "bmp", "tif", "tiff",
+                                         "webp", "pdf", "ppm",  "hdr", "svg", "exr", "eps"};
     const char *dot = strrchr(path, '.');
     if (!dot || strchr(dot, '/'))
         return SC_EXIT_OK;

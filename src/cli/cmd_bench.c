@@ -88,7 +88,8 @@ static int parse_tiers(char *s, options *o)
     o->run.n_tiers = split(s, o->run.tiers, 16);
     for (int i = 0; i < o->run.n_tiers; i++)
         if (!known_tier(o->run.tiers[i])) {
-            sc_error("bench: --tier: unknown tier '%s' (see 'shadecalc bench --list')", o->run.tiers[i]);
+            sc_error("bench: --tier: unknown tier '%s' (see 'shadecalc bench --list')",
+                     o->run.tiers[i]);
             return SC_EXIT_USAGE;
         }
     if (o->run.n_tiers <= 0) {
@@ -186,11 +187,11 @@ static int parse_kernels(int argc, char **argv, options *o)
 static int parse_options(int argc, char **argv, options *o)
 {
     static const struct option longs[] = {
-        {"list", no_argument, NULL, 'l'},       {"isa", required_argument, NULL, 'i'},
-        {"tier", required_argument, NULL, 't'}, {"n", required_argument, NULL, 'n'},
+        {"list", no_argument, NULL, 'l'},         {"isa", required_argument, NULL, 'i'},
+        {"tier", required_argument, NULL, 't'},   {"n", required_argument, NULL, 'n'},
         {"repeat", required_argument, NULL, 'r'}, {"format", required_argument, NULL, 'f'},
         {"warmup", required_argument, NULL, 'w'}, {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},       {NULL, 0, NULL, 0}};
+        {"help", no_argument, NULL, 'h'},         {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
     while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "li:t:n:r:f:w:o:h", longs)) != -1) {

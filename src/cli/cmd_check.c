@@ -85,9 +85,9 @@ static void print_csv_rows(const char *spec, const check_options *o, const check
 {
     for (int i = 0; i < o->n_theta; i++) {
         const sc_albedo_result *a = &r->a[i];
-        printf("\"%s\",%g,%.9g,%.9g,%.9g,%.3g,%.9g,%.3g,%d,%d\n", spec, o->theta[i],
-               a->albedo[0], a->albedo[1], a->albedo[2], max3(a->error), r->max_albedo,
-               r->reciprocity, !exceeds_one(r), reciprocal(r));
+        printf("\"%s\",%g,%.9g,%.9g,%.9g,%.3g,%.9g,%.3g,%d,%d\n", spec, o->theta[i], a->albedo[0],
+               a->albedo[1], a->albedo[2], max3(a->error), r->max_albedo, r->reciprocity,
+               !exceeds_one(r), reciprocal(r));
     }
 }
 
@@ -139,9 +139,9 @@ static int add_brdf(check_options *o, const char *spec)
 static int parse_options(int argc, char **argv, check_options *o)
 {
     static const struct option longs[] = {
-        {"brdf", required_argument, NULL, 'b'}, {"theta", required_argument, NULL, 't'},
+        {"brdf", required_argument, NULL, 'b'},  {"theta", required_argument, NULL, 't'},
         {"order", required_argument, NULL, 'o'}, {"format", required_argument, NULL, 'f'},
-        {"help", no_argument, NULL, 'h'},       {NULL, 0, NULL, 0}};
+        {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     long order;
     sc_getopt_reset();

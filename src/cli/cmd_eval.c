@@ -105,8 +105,8 @@ static sc_expr *compile(const char *src, const define_set *d, const char *where)
 }
 
 /* Evaluates e in the chosen precision (and in double when --ulp); status as the command's. */
-static int evaluate(const sc_expr *e, const define_set *d, const eval_options *o,
-                    const char *where, sc_value *value, sc_value *reference)
+static int evaluate(const sc_expr *e, const define_set *d, const eval_options *o, const char *where,
+                    sc_value *value, sc_value *reference)
 {
     domain_hits hits = {.n = 0};
     *value = sc_expr_eval(e, o->prec, d->values, record_domain, &hits);
@@ -332,11 +332,14 @@ static int parse_format(const char *arg, int *format)
 
 static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
 {
-    static const struct option longs[] = {
-        {"precision", required_argument, NULL, 'p'}, {"format", required_argument, NULL, 'f'},
-        {"define", required_argument, NULL, 'D'},    {"hex", no_argument, NULL, 'x'},
-        {"ulp", no_argument, NULL, 'u'},             {"strict", no_argument, NULL, 's'},
-        {"help", no_argument, NULL, 'h'},            {NULL, 0, NULL, 0}};
+    static const struct option longs[] = {{"precision", required_argument, NULL, 'p'},
+                                          {"format", required_argument, NULL, 'f'},
+                                          {"define", required_argument, NULL, 'D'},
+                                          {"hex", no_argument, NULL, 'x'},
+                                          {"ulp", no_argument, NULL, 'u'},
+                                          {"strict", no_argument, NULL, 's'},
+                                          {"help", no_argument, NULL, 'h'},
+                                          {NULL, 0, NULL, 0}};
     const char *defines[MAX_DEFINES + 1];
     int n_defines = 0, c;
     sc_getopt_reset();
@@ -418,8 +421,8 @@ typedef struct {
 } csv_header;
 
 /* One line of standard input: compiled, evaluated and printed. Status as the command's. */
-static int run_line(const char *src, const char *where, const define_set *d,
-                    const eval_options *o, csv_header *header)
+static int run_line(const char *src, const char *where, const define_set *d, const eval_options *o,
+                    csv_header *header)
 {
     sc_expr *e = compile(src, d, where);
     if (!e)

@@ -70,10 +70,7 @@ static void csv_values(const double *v, int n, const char *end)
         csv_value(v[k], k + 1 < n ? "," : end);
 }
 
-static sc_dvec3 dvec3(const double *a)
-{
-    return sc_dvec3_make(a[0], a[1], a[2]);
-}
+static sc_dvec3 dvec3(const double *a) { return sc_dvec3_make(a[0], a[1], a[2]); }
 
 /* Prints a × b and its length; returns the length. */
 static double explain_cross(const double *a, const double *b, const char *label, int print)
@@ -303,8 +300,7 @@ static int parse_options(int argc, char **argv, normal_options *o)
         {"help", no_argument, NULL, 'h'},           {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK &&
-           (c = sc_getopt(argc, argv, "s:u:t:m:ef:h", longs)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "s:u:t:m:ef:h", longs)) != -1) {
         switch (c) {
         case 's': status = parse_surface(optarg, o); break;
         case 'u': status = parse_uv(optarg, o); break;

@@ -37,7 +37,7 @@ typedef struct {
     double eye[3], at[3], up[3], fov;
     int have_eye, have_at;
     const char *plan_option; /* --shading or --triangles, which --compare's plan fixes */
-    char *command; /* the command line, for the EXR header */
+    char *command;           /* the command line, for the EXR header */
 } render_options;
 
 static void usage(FILE *out)
@@ -129,8 +129,7 @@ static int parse_vector(const char *opt, const char *arg, double out[3], int *fl
     return SC_EXIT_OK;
 }
 
-static int parse_choice(const char *opt, const char *arg, const char *const *names, int n,
-                        int *out)
+static int parse_choice(const char *opt, const char *arg, const char *const *names, int n, int *out)
 {
     for (int i = 0; i < n; i++)
         if (strcmp(arg, names[i]) == 0) {
@@ -229,9 +228,23 @@ static int parse_compression(const char *arg, sc_exr_compression *out)
 }
 
 enum {
-    OPT_SURFACE = 256, OPT_MESH, OPT_SHADING, OPT_EYE, OPT_AT, OPT_UP, OPT_FOV, OPT_SIZE,
-    OPT_EXR_TYPE, OPT_DEPTH, OPT_NORMALS, OPT_COMPARE, OPT_OUTPUT_DIR, OPT_ISA, OPT_TIER,
-    OPT_COMPRESSION, OPT_FORCE
+    OPT_SURFACE = 256,
+    OPT_MESH,
+    OPT_SHADING,
+    OPT_EYE,
+    OPT_AT,
+    OPT_UP,
+    OPT_FOV,
+    OPT_SIZE,
+    OPT_EXR_TYPE,
+    OPT_DEPTH,
+    OPT_NORMALS,
+    OPT_COMPARE,
+    OPT_OUTPUT_DIR,
+    OPT_ISA,
+    OPT_TIER,
+    OPT_COMPRESSION,
+    OPT_FORCE
 };
 
 typedef struct {
@@ -280,9 +293,7 @@ static int apply_value(render_options *o, int c, const char *arg)
         status = parse_choice("--exr-type", arg, types, 2, &choice);
         o->exr.type = choice ? SC_PIXEL_FLOAT : SC_PIXEL_HALF;
         break;
-    case 'f':
-        status = parse_choice("--format", arg, formats, 2, &o->format);
-        break;
+    case 'f': status = parse_choice("--format", arg, formats, 2, &o->format); break;
     case 'p':
         if (sc_prec_parse(arg, &o->prec) < 0) {
             sc_error("render: --precision %s: expected double|highp|mediump|lowp", arg);
@@ -346,7 +357,10 @@ static int parse_options(int argc, char **argv, shade_setup *s, render_options *
         case 'l':
         case 'b':
         case 'a': todo[n++] = (pending){c, optarg}; break;
-        case 'h': usage(stdout); status = -1; break;
+        case 'h':
+            usage(stdout);
+            status = -1;
+            break;
         case '?': status = sc_usage_error("render", argv, optopt); break;
         default: status = apply_value(o, c, optarg); break;
         }
@@ -385,7 +399,8 @@ static int check_options(const shade_setup *s, const render_options *o)
     }
     if (o->compare && o->plan_option) {
         sc_error("render: --compare renders its own plan (Gouraud at 1024, 6320, 40000 "
-                 "triangles, Phong at 6320, exact): %s does not apply", o->plan_option);
+                 "triangles, Phong at 6320, exact): %s does not apply",
+                 o->plan_option);
         return SC_EXIT_USAGE;
     }
     if (s->model.kind == SC_MODEL_BRDF && b->ax != b->ay &&
@@ -477,8 +492,7 @@ static int write_exr(const render_options *o, const sc_image *img, const char *p
                      const char *key, const char *value)
 {
     char err[1024];
-    const sc_image_attr attrs[] = {{"shadecalc:command", o->command},
-                                   {(char *)key, (char *)value}};
+    const sc_image_attr attrs[] = {{"shadecalc:command", o->command}, {(char *)key, (char *)value}};
     sc_exr_options exr = o->exr;
     exr.threads = o->threads;
     if (sc_exr_write_with(path, img, &exr, attrs, 2, err, sizeof err) < 0) {
@@ -550,8 +564,13 @@ static int render_one(const render_options *o, const shade_setup *s, const sc_sc
         status = SC_EXIT_RUNTIME;
     }
     double seconds;
-    sc_render_params rp = {.mesh = &mesh, .surface = surface, .scene = scene, .prec = o->prec,
-                           .tier = o->tier, .shading = o->shading, .threads = o->threads};
+    sc_render_params rp = {.mesh = &mesh,
+                           .surface = surface,
+                           .scene = scene,
+                           .prec = o->prec,
+                           .tier = o->tier,
+                           .shading = o->shading,
+                           .threads = o->threads};
     if (status == SC_EXIT_OK) {
         char err[512];
         make_camera(o, s, &mesh, &rp.camera);
@@ -654,8 +673,8 @@ static void print_rows(const render_options *o, const compare_row *rows)
             printf("%s,%d,%.6f,%.9g,%.9g\n", mode, r->triangles, r->seconds, r->error.rmse,
                    r->error.max_error);
         else
-            printf("%-8s %9d %9.4f %12.6g %12.6g\n", mode, r->triangles, r->seconds,
-                   r->error.rmse, r->error.max_error);
+            printf("%-8s %9d %9.4f %12.6g %12.6g\n", mode, r->triangles, r->seconds, r->error.rmse,
+                   r->error.max_error);
     }
 }
 
@@ -690,7 +709,8 @@ static int make_directory(const char *path)
         char end = *p;
         *p = '\0';
         struct stat st;
-        if (mkdir(dir, 0777) < 0 && (errno != EEXIST || stat(dir, &st) < 0 || !S_ISDIR(st.st_mode))) {
+        if (mkdir(dir, 0777) < 0 &&
+            (errno != EEXIST || stat(dir, &st) < 0 || !S_ISDIR(st.st_mode))) {
             sc_error("render: --output-dir %s: %s", dir,
                      errno == EEXIST ? "not a directory" : strerror(errno));
             return SC_EXIT_RUNTIME;
@@ -725,8 +745,11 @@ static int render_compare(const render_options *o, const shade_setup *s, const s
     compare_state c = {0};
     compare_row rows[STEPS];
     int status = prepare_compare(o, &c);
-    sc_render_params rp = {.surface = c.surface, .scene = scene, .prec = o->prec,
-                           .tier = o->tier, .threads = o->threads};
+    sc_render_params rp = {.surface = c.surface,
+                           .scene = scene,
+                           .prec = o->prec,
+                           .tier = o->tier,
+                           .threads = o->threads};
     if (status == SC_EXIT_OK) {
         char err[512];
         make_camera(o, s, &c.meshes[MESHES - 1], &rp.camera);
@@ -756,10 +779,17 @@ static int render_compare(const render_options *o, const shade_setup *s, const s
 static int run(int argc, char **argv)
 {
     shade_setup *s = malloc(sizeof *s);
-    render_options o = {.triangles = 6320, .width = 512, .height = 512, .shading = SC_SHADING_PHONG,
-                        .exr = {SC_PIXEL_HALF, SC_EXR_ZIP, 0}, .prec = SC_HIGHP,
-                        .tier = "accurate", .up = {0, 0, 1},
-                        .fov = 40.0, .output_dir = ".", .command = join_command(argc, argv)};
+    render_options o = {.triangles = 6320,
+                        .width = 512,
+                        .height = 512,
+                        .shading = SC_SHADING_PHONG,
+                        .exr = {SC_PIXEL_HALF, SC_EXR_ZIP, 0},
+                        .prec = SC_HIGHP,
+                        .tier = "accurate",
+                        .up = {0, 0, 1},
+                        .fov = 40.0,
+                        .output_dir = ".",
+                        .command = join_command(argc, argv)};
     if (!s || !o.command) {
         free(s);
         free(o.command);
@@ -773,8 +803,8 @@ static int run(int argc, char **argv)
     if (status == SC_EXIT_OK)
         status = complete_setup(s, &o);
     if (status == SC_EXIT_OK) {
-        sc_scene scene = {s->lights, s->n_lights, s->model,
-                          {s->ambient[0], s->ambient[1], s->ambient[2]}};
+        sc_scene scene = {
+            s->lights, s->n_lights, s->model, {s->ambient[0], s->ambient[1], s->ambient[2]}};
         status = check_tier(&o, &scene);
         if (status == SC_EXIT_OK)
             status = o.compare ? render_compare(&o, s, &scene) : render_one(&o, s, &scene);
@@ -784,6 +814,7 @@ static int run(int argc, char **argv)
     return status < 0 ? SC_EXIT_OK : status;
 }
 
-const sc_command sc_cmd_render = {"render", "rasterize a surface with flat/Gouraud/Phong/exact "
-                                            "shading into an EXR; --compare",
+const sc_command sc_cmd_render = {"render",
+                                  "rasterize a surface with flat/Gouraud/Phong/exact "
+                                  "shading into an EXR; --compare",
                                   run};

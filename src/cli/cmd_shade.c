@@ -165,8 +165,7 @@ static void print_csv(const sc_shade_result *r, const shade_options *o)
     fputc('\n', stdout);
 }
 
-static void json_light(const sc_light *light, const sc_light_terms *t, const sc_model *m,
-                       sc_prec p)
+static void json_light(const sc_light *light, const sc_light_terms *t, const sc_model *m, sc_prec p)
 {
     explain_term terms[MAX_TERMS];
     int n = light_terms(light, t, m, terms);
@@ -236,15 +235,20 @@ static int apply(shade_setup *s, const pending *o)
 
 static int parse_options(int argc, char **argv, shade_setup *s, shade_options *o)
 {
-    static const struct option longs[] = {
-        {"light", required_argument, NULL, 'l'},  {"brdf", required_argument, NULL, 'b'},
-        {"ambient", required_argument, NULL, 'a'}, {"scene", required_argument, NULL, 's'},
-        {"n", required_argument, NULL, OPT_N},     {"v", required_argument, NULL, OPT_V},
-        {"p", required_argument, NULL, OPT_P},     {"eye", required_argument, NULL, OPT_EYE},
-        {"tangent", required_argument, NULL, OPT_TANGENT},
-        {"precision", required_argument, NULL, 'p'}, {"format", required_argument, NULL, 'f'},
-        {"explain", no_argument, NULL, 'e'},       {"help", no_argument, NULL, 'h'},
-        {NULL, 0, NULL, 0}};
+    static const struct option longs[] = {{"light", required_argument, NULL, 'l'},
+                                          {"brdf", required_argument, NULL, 'b'},
+                                          {"ambient", required_argument, NULL, 'a'},
+                                          {"scene", required_argument, NULL, 's'},
+                                          {"n", required_argument, NULL, OPT_N},
+                                          {"v", required_argument, NULL, OPT_V},
+                                          {"p", required_argument, NULL, OPT_P},
+                                          {"eye", required_argument, NULL, OPT_EYE},
+                                          {"tangent", required_argument, NULL, OPT_TANGENT},
+                                          {"precision", required_argument, NULL, 'p'},
+                                          {"format", required_argument, NULL, 'f'},
+                                          {"explain", no_argument, NULL, 'e'},
+                                          {"help", no_argument, NULL, 'h'},
+                                          {NULL, 0, NULL, 0}};
     pending *todo = calloc((size_t)argc + 1, sizeof *todo);
     const char *scene = NULL;
     int n = 0, c, status = todo ? SC_EXIT_OK : SC_EXIT_RUNTIME;
@@ -260,13 +264,17 @@ static int parse_options(int argc, char **argv, shade_setup *s, shade_options *o
             break;
         case 'f': status = parse_format(optarg, &o->format); break;
         case 'e': o->explain = 1; break;
-        case 'h': usage(stdout); status = -1; break;
+        case 'h':
+            usage(stdout);
+            status = -1;
+            break;
         case '?': status = sc_usage_error("shade", argv, optopt); break;
         default: todo[n++] = (pending){c, optarg}; break;
         }
     }
     if (status == SC_EXIT_OK && optind < argc) {
-        sc_error("shade: unexpected argument '%s' (specs go after --light or --brdf)", argv[optind]);
+        sc_error("shade: unexpected argument '%s' (specs go after --light or --brdf)",
+                 argv[optind]);
         status = SC_EXIT_USAGE;
     }
     if (status == SC_EXIT_OK && scene)
@@ -302,7 +310,8 @@ static int run(int argc, char **argv)
         status = setup_point(s, &at);
     if (status == SC_EXIT_OK) {
         sc_light_terms terms[SETUP_MAX_LIGHTS];
-        sc_scene scene = {s->lights, s->n_lights, s->model, {s->ambient[0], s->ambient[1], s->ambient[2]}};
+        sc_scene scene = {
+            s->lights, s->n_lights, s->model, {s->ambient[0], s->ambient[1], s->ambient[2]}};
         sc_shade_result r = {.per_light = terms};
         sc_shade(o.prec, &scene, &at, &r);
         if (isinf(r.L[0]) || isinf(r.L[1]) || isinf(r.L[2]))

@@ -79,9 +79,29 @@ static void usage(FILE *out)
 /* ---- options ---- */
 
 enum {
-    OPT_N = 256, OPT_V, OPT_P, OPT_EYE, OPT_TANGENT, OPT_VAR, OPT_LOG, OPT_PRESET, OPT_PLOT,
-    OPT_POLAR, OPT_TITLE, OPT_XLABEL, OPT_YLABEL, OPT_XLOG, OPT_YLOG, OPT_YRANGE, OPT_IMAGE,
-    OPT_EXR_TYPE, OPT_HEATMAP, OPT_TONE, OPT_EXPOSURE, OPT_SQRT_X, OPT_FORCE
+    OPT_N = 256,
+    OPT_V,
+    OPT_P,
+    OPT_EYE,
+    OPT_TANGENT,
+    OPT_VAR,
+    OPT_LOG,
+    OPT_PRESET,
+    OPT_PLOT,
+    OPT_POLAR,
+    OPT_TITLE,
+    OPT_XLABEL,
+    OPT_YLABEL,
+    OPT_XLOG,
+    OPT_YLOG,
+    OPT_YRANGE,
+    OPT_IMAGE,
+    OPT_EXR_TYPE,
+    OPT_HEATMAP,
+    OPT_TONE,
+    OPT_EXPOSURE,
+    OPT_SQRT_X,
+    OPT_FORCE
 };
 
 static int parse_yrange(const char *arg, sweep_picture_options *o)
@@ -122,8 +142,11 @@ static int option_value(sweep_options *o, int c, const char *arg)
     case 'b': return add_item(o, 'b', "brdf", arg);
     case 'a': return add_item(o, 'a', "ambient", arg);
     case 's': o->setup.scene = arg; return SC_EXIT_OK;
-    case OPT_N: case OPT_V: case OPT_P: case OPT_EYE: case OPT_TANGENT:
-        return add_item(o, c, geometry[c - OPT_N], arg);
+    case OPT_N:
+    case OPT_V:
+    case OPT_P:
+    case OPT_EYE:
+    case OPT_TANGENT: return add_item(o, c, geometry[c - OPT_N], arg);
     case OPT_VAR:
         if (o->n_var_args == SC_SWEEP_MAX_VARS) {
             sc_error("sweep: too many --var (at most %d)", SC_SWEEP_MAX_VARS);
@@ -208,33 +231,42 @@ static int picture_option(sweep_picture_options *o, int c, const char *arg)
 
 static int parse_options(int argc, char **argv, sweep_options *o)
 {
-    static const struct option longs[] = {
-        {"var", required_argument, NULL, OPT_VAR},   {"log", optional_argument, NULL, OPT_LOG},
-        {"light", required_argument, NULL, 'l'},     {"brdf", required_argument, NULL, 'b'},
-        {"ambient", required_argument, NULL, 'a'},   {"scene", required_argument, NULL, 's'},
-        {"n", required_argument, NULL, OPT_N},       {"v", required_argument, NULL, OPT_V},
-        {"p", required_argument, NULL, OPT_P},       {"eye", required_argument, NULL, OPT_EYE},
-        {"tangent", required_argument, NULL, OPT_TANGENT},
-        {"preset", required_argument, NULL, OPT_PRESET},
-        {"precision", required_argument, NULL, 'p'}, {"format", required_argument, NULL, 'f'},
-        {"output", required_argument, NULL, 'o'},    {"threads", required_argument, NULL, 'j'},
-        {"plot", required_argument, NULL, OPT_PLOT}, {"polar", no_argument, NULL, OPT_POLAR},
-        {"title", required_argument, NULL, OPT_TITLE},
-        {"xlabel", required_argument, NULL, OPT_XLABEL},
-        {"ylabel", required_argument, NULL, OPT_YLABEL}, {"xlog", no_argument, NULL, OPT_XLOG},
-        {"ylog", no_argument, NULL, OPT_YLOG},       {"yrange", required_argument, NULL, OPT_YRANGE},
-        {"image", required_argument, NULL, OPT_IMAGE},
-        {"exr-type", required_argument, NULL, OPT_EXR_TYPE},
-        {"heatmap", required_argument, NULL, OPT_HEATMAP},
-        {"tone", required_argument, NULL, OPT_TONE},
-        {"exposure", required_argument, NULL, OPT_EXPOSURE},
-        {"sqrt-x", no_argument, NULL, OPT_SQRT_X},
-        {"force", no_argument, NULL, OPT_FORCE},
-        {"help", no_argument, NULL, 'h'},            {NULL, 0, NULL, 0}};
+    static const struct option longs[] = {{"var", required_argument, NULL, OPT_VAR},
+                                          {"log", optional_argument, NULL, OPT_LOG},
+                                          {"light", required_argument, NULL, 'l'},
+                                          {"brdf", required_argument, NULL, 'b'},
+                                          {"ambient", required_argument, NULL, 'a'},
+                                          {"scene", required_argument, NULL, 's'},
+                                          {"n", required_argument, NULL, OPT_N},
+                                          {"v", required_argument, NULL, OPT_V},
+                                          {"p", required_argument, NULL, OPT_P},
+                                          {"eye", required_argument, NULL, OPT_EYE},
+                                          {"tangent", required_argument, NULL, OPT_TANGENT},
+                                          {"preset", required_argument, NULL, OPT_PRESET},
+                                          {"precision", required_argument, NULL, 'p'},
+                                          {"format", required_argument, NULL, 'f'},
+                                          {"output", required_argument, NULL, 'o'},
+                                          {"threads", required_argument, NULL, 'j'},
+                                          {"plot", required_argument, NULL, OPT_PLOT},
+                                          {"polar", no_argument, NULL, OPT_POLAR},
+                                          {"title", required_argument, NULL, OPT_TITLE},
+                                          {"xlabel", required_argument, NULL, OPT_XLABEL},
+                                          {"ylabel", required_argument, NULL, OPT_YLABEL},
+                                          {"xlog", no_argument, NULL, OPT_XLOG},
+                                          {"ylog", no_argument, NULL, OPT_YLOG},
+                                          {"yrange", required_argument, NULL, OPT_YRANGE},
+                                          {"image", required_argument, NULL, OPT_IMAGE},
+                                          {"exr-type", required_argument, NULL, OPT_EXR_TYPE},
+                                          {"heatmap", required_argument, NULL, OPT_HEATMAP},
+                                          {"tone", required_argument, NULL, OPT_TONE},
+                                          {"exposure", required_argument, NULL, OPT_EXPOSURE},
+                                          {"sqrt-x", no_argument, NULL, OPT_SQRT_X},
+                                          {"force", no_argument, NULL, OPT_FORCE},
+                                          {"help", no_argument, NULL, 'h'},
+                                          {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK &&
-           (c = sc_getopt(argc, argv, "+l:b:a:s:p:f:o:j:h", longs)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "+l:b:a:s:p:f:o:j:h", longs)) != -1) {
         if (c == 'h') {
             usage(stdout);
             return -1;
@@ -310,7 +342,8 @@ static int make_plan(sweep_options *o, const sc_sweep_grid *g, sweep_plan *plan)
         return sweep_preset_plan(o->preset, &o->setup, g, o->prec, threads, plan);
     if (o->expr && (o->setup.n_items || o->setup.scene)) {
         sc_error("sweep: EXPR '%s' is evaluated on its own: drop --light, --brdf, --scene and "
-                 "the geometry options (or the EXPR)", o->expr);
+                 "the geometry options (or the EXPR)",
+                 o->expr);
         return SC_EXIT_USAGE;
     }
     if (o->expr)
@@ -395,12 +428,16 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
     sc_progress bar;
     sc_progress_start(&bar, "sweep", 1.0);
     job_context ctx = {plan, pictures, &bar};
-    sc_sweep_job job = {g, plan->n_results, job_eval, &ctx,
-                        o->pictures.plot || o->pictures.image || o->pictures.heatmap
-                            ? job_consume
-                            : NULL,
-                        file ? &table : NULL, file ? sc_atomic_stream(file) : NULL,
-                        isatty(STDERR_FILENO) ? job_progress : NULL, (int)o->threads};
+    sc_sweep_job job = {g,
+                        plan->n_results,
+                        job_eval,
+                        &ctx,
+                        o->pictures.plot || o->pictures.image || o->pictures.heatmap ? job_consume
+                                                                                     : NULL,
+                        file ? &table : NULL,
+                        file ? sc_atomic_stream(file) : NULL,
+                        isatty(STDERR_FILENO) ? job_progress : NULL,
+                        (int)o->threads};
     sc_sweep_status status = SC_SWEEP_OK;
     if (file && sc_sweep_write_header(job.out, &table) < 0)
         status = SC_SWEEP_WRITE_ERROR;
@@ -453,10 +490,12 @@ static void warn_unused(const sc_sweep_grid *g, const sweep_plan *plan, const ch
             continue;
         if (expr)
             sc_warning("sweep: EXPR does not use variable '%s': its values all give the same "
-                       "results", name);
+                       "results",
+                       name);
         else
             sc_warning("sweep: nothing reads variable '%s' (no spec has $%s and it is not an "
-                       "angle of l or v): its values all give the same results", name, name);
+                       "angle of l or v): its values all give the same results",
+                       name, name);
     }
 }
 

@@ -33,9 +33,8 @@ static void unknown_command(const char *name)
     for (int i = 0; i < command_count; i++)
         sc_suggest_consider(&s, commands[i]->name);
     const char *best = sc_suggest_best(&s);
-    sc_error("unknown command '%s'%s%s%s (see 'shadecalc --help')",
-             name, best ? "; did you mean '" : "", best ? best : "",
-             best ? "'?" : "");
+    sc_error("unknown command '%s'%s%s%s (see 'shadecalc --help')", name,
+             best ? "; did you mean '" : "", best ? best : "", best ? "'?" : "");
 }
 
 /* Runs the command argv[0] with its arguments. */
@@ -104,6 +103,7 @@ int main(int argc, char **argv)
     occupy_closed_std_fds();
     if (sc_atomic_remove_on_signals() != 0)
         sc_warning("cannot install the signal handlers: %s (an interrupted write may leave its "
-                   "temporary)", strerror(errno));
+                   "temporary)",
+                   strerror(errno));
     return finish_stdout(dispatch(argc, argv));
 }

@@ -77,11 +77,11 @@ int setup_set_value(shade_setup *s, const char *name, const char *value, const c
             *flags[i] = 1;
         return SC_EXIT_OK;
     }
-    static const char *const items[] = {"light", "brdf", "ambient", "n", "v", "p", "eye",
-                                        "tangent", NULL};
+    static const char *const items[] = {"light", "brdf", "ambient", "n", "v",
+                                        "p",     "eye",  "tangent", NULL};
     const char *best = sc_suggest_among(name, items);
-    sc_error("%sunknown item '%s'%s%s%s", where, name,
-             best ? " (did you mean '" : "", best ? best : "", best ? "'?)" : "");
+    sc_error("%sunknown item '%s'%s%s%s", where, name, best ? " (did you mean '" : "",
+             best ? best : "", best ? "'?)" : "");
     return SC_EXIT_USAGE;
 }
 
@@ -198,9 +198,13 @@ int setup_check_range(const shade_setup *s, sc_prec p)
             sc_error("light %d: %s", k + 1, msg);
             return SC_EXIT_USAGE;
         }
-    const sc_param point[] = {{"emission", s->model.emission, 3}, {"--ambient", s->ambient, 3},
-                              {"--n", s->n, 3}, {"--v", s->v, 3}, {"--p", s->p, 3},
-                              {"--eye", s->eye, 3}, {"--tangent", s->tangent, 3}};
+    const sc_param point[] = {{"emission", s->model.emission, 3},
+                              {"--ambient", s->ambient, 3},
+                              {"--n", s->n, 3},
+                              {"--v", s->v, 3},
+                              {"--p", s->p, 3},
+                              {"--eye", s->eye, 3},
+                              {"--tangent", s->tangent, 3}};
     if (sc_brdf_check_range(p, &s->model.brdf, msg, sizeof msg) < 0 ||
         sc_params_in_range(p, point, (int)(sizeof point / sizeof point[0]), msg, sizeof msg) < 0) {
         sc_error("%s", msg);

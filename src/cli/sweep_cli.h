@@ -23,9 +23,9 @@ typedef struct {
     void (*destroy)(void *user);
     char title[256];
     const char *ylabel;
-    unsigned unused;   /* bit k: nothing reads variable k (warned about before the run) */
-    int polar;         /* a preset's default view */
-    double ymin, ymax; /* a preset's y range; NaN: from the data */
+    unsigned unused;             /* bit k: nothing reads variable k (warned about before the run) */
+    int polar;                   /* a preset's default view */
+    double ymin, ymax;           /* a preset's y range; NaN: from the data */
     const char *reference_label; /* a preset's reference line y = reference_y, or NULL */
     double reference_y;
 } sweep_plan;
@@ -70,7 +70,7 @@ typedef struct {
     int exr_half;
     const char *title, *xlabel, *ylabel; /* NULL: defaults from the plan and the variables */
     int xlog, ylog, polar;
-    double ymin, ymax; /* NaN: from the data */
+    double ymin, ymax;   /* NaN: from the data */
     const char *command; /* the command line, stored in the EXR header */
     const char *heatmap; /* path or NULL */
     sc_tone tone;        /* of the heat map */

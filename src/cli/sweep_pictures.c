@@ -17,9 +17,9 @@ struct sweep_pictures {
     sweep_picture_options o;
     const sc_sweep_grid *grid;
     const sweep_plan *plan;
-    long nx, ny;     /* counts of the first and second variables (ny = 1 without one) */
-    double *x, *y;   /* plot: x[i]; y[(c·ny + j)·nx + i] for column c, second-variable index j */
-    int grey;        /* rgb columns equal on every row so far */
+    long nx, ny;   /* counts of the first and second variables (ny = 1 without one) */
+    double *x, *y; /* plot: x[i]; y[(c·ny + j)·nx + i] for column c, second-variable index j */
+    int grey;      /* rgb columns equal on every row so far */
     sc_image image;
 };
 
@@ -30,22 +30,24 @@ static int open_plot(sweep_pictures *p)
     double values = (double)p->nx * (double)p->ny * (double)p->plan->n_results;
     if (p->o.plot && (g->n > 2 || values > PLOT_MAX_VALUES)) {
         sc_error("sweep: --plot %s: draws one or two variables and at most %d values (this sweep "
-                 "has %d variables, %.0f values)", p->o.plot, PLOT_MAX_VALUES, g->n, values);
+                 "has %d variables, %.0f values)",
+                 p->o.plot, PLOT_MAX_VALUES, g->n, values);
         return SC_EXIT_USAGE;
     }
     if (p->o.heatmap && (g->n != 2 || p->nx < 2 || p->ny < 2 ||
                          (double)p->nx * (double)p->ny > HEATMAP_MAX_CELLS)) {
         sc_error("sweep: --heatmap %s: draws exactly two variables of at least 2 values each and "
                  "at most %d cells (this sweep has %d variables, %.0f cells; --image writes "
-                 "larger grids)", p->o.heatmap, HEATMAP_MAX_CELLS, g->n,
-                 (double)p->nx * (double)p->ny);
+                 "larger grids)",
+                 p->o.heatmap, HEATMAP_MAX_CELLS, g->n, (double)p->nx * (double)p->ny);
         return SC_EXIT_USAGE;
     }
     for (int k = 0; p->o.heatmap && k < 2; k++)
         if (!(sc_sweep_var_value(&g->var[k], 0) <
               sc_sweep_var_value(&g->var[k], g->var[k].count - 1))) {
             sc_error("sweep: --heatmap %s: the variable %s must increase from its first value to "
-                     "its last", p->o.heatmap, g->var[k].name);
+                     "its last",
+                     p->o.heatmap, g->var[k].name);
             return SC_EXIT_USAGE;
         }
     p->x = malloc((size_t)p->nx * sizeof *p->x);
@@ -136,8 +138,7 @@ static int write_svg(const char *path, int (*writer)(FILE *, const void *), cons
 
 /* The legend of column c at second-variable index j: "column, name=value", either part
  * dropped when it says nothing. */
-static void curve_label(const sweep_pictures *p, int columns, int c, long j, char *buf,
-                        size_t size)
+static void curve_label(const sweep_pictures *p, int columns, int c, long j, char *buf, size_t size)
 {
     const char *column = p->plan->legend[c] ? p->plan->legend[c] : p->plan->columns[c];
     size_t n = (size_t)snprintf(buf, size, "%s", columns > 1 ? column : "");
@@ -170,7 +171,7 @@ static int write_plot(const sweep_pictures *p)
 {
     int columns = p->grey ? 1 : p->plan->n_results, n = columns * (int)p->ny;
     sc_plot_series *series = calloc((size_t)n, sizeof *series);
-    char (*labels)[LABEL_MAX] = calloc((size_t)n, sizeof *labels);
+    char(*labels)[LABEL_MAX] = calloc((size_t)n, sizeof *labels);
     char xlabel[64];
     if (!series || !labels) {
         free(series);
@@ -182,11 +183,11 @@ static int write_plot(const sweep_pictures *p)
     for (int c = 0, s = 0; c < columns; c++)
         for (long j = 0; j < p->ny; j++, s++) {
             curve_label(p, columns, c, j, labels[s], sizeof labels[s]);
-            series[s] = (sc_plot_series){
-                .label = labels[s][0] ? labels[s] : NULL,
-                .x = p->x,
-                .y = p->y + ((size_t)c * (size_t)p->ny + (size_t)j) * (size_t)p->nx,
-                .n = (size_t)p->nx};
+            series[s] = (sc_plot_series){.label = labels[s][0] ? labels[s] : NULL,
+                                         .x = p->x,
+                                         .y = p->y + ((size_t)c * (size_t)p->ny + (size_t)j) *
+                                                         (size_t)p->nx,
+                                         .n = (size_t)p->nx};
             curve_incident(p, j, &series[s]);
         }
     axis_label(p->grid, 0, xlabel, sizeof xlabel);
@@ -246,8 +247,13 @@ static int write_heatmap(const sweep_pictures *p)
                     .xlabel = o->xlabel ? o->xlabel : xlabel,
                     .ylabel = o->ylabel ? o->ylabel : ylabel,
                     .value_label = p->plan->ylabel ? p->plan->ylabel : column,
-                    .x = p->x, .y = ys, .nx = (size_t)p->nx, .ny = (size_t)p->ny,
-                    .values = values, .tone = o->tone, .exposure = o->exposure,
+                    .x = p->x,
+                    .y = ys,
+                    .nx = (size_t)p->nx,
+                    .ny = (size_t)p->ny,
+                    .values = values,
+                    .tone = o->tone,
+                    .exposure = o->exposure,
                     .sqrt_x = o->sqrt_x};
     int status = write_svg(o->heatmap, write_heatmap_svg, &h);
     free(ys);

@@ -35,7 +35,7 @@ typedef struct {
     const char *vars[2]; /* --var arguments */
     preset_curve curves[MAX_CURVES];
     const char *title, *ylabel;
-    double ymax; /* NaN: from the data */
+    double ymax;                 /* NaN: from the data */
     const char *reference_label; /* a dashed line at y = 1, or NULL */
 } preset;
 
@@ -137,7 +137,8 @@ static int eval_curves(void *user, int worker, const double *vars, double *resul
         if (t->kind == CURVE_ATTEN) {
             results[c] = sc_atten_eval(t->prec, &t->lights[c].atten, vars[0]);
         } else if (t->kind == CURVE_SPOT) {
-            results[c] = sc_spot_eval(t->prec, &t->lights[c].spot, cos(vars[0] * radians_per_degree));
+            results[c] = sc_spot_eval(t->prec, &t->lights[c].spot,
+                                      cos(vars[0] * radians_per_degree));
         } else {
             sc_albedo_result a;
             sc_albedo(&t->brdfs[c], vars[0], ALBEDO_ORDER, &a);
@@ -177,8 +178,7 @@ static int add_curve(curve_table *t, sweep_plan *plan, const char *column, const
 }
 
 /* The preset's curves, or for albedo the user's --brdf models. */
-static int add_curves(const preset *p, const sweep_setup_args *a, curve_table *t,
-                      sweep_plan *plan)
+static int add_curves(const preset *p, const sweep_setup_args *a, curve_table *t, sweep_plan *plan)
 {
     int status = SC_EXIT_OK;
     for (int i = 0; i < a->n_items && status == SC_EXIT_OK; i++) {
@@ -193,8 +193,7 @@ static int add_curves(const preset *p, const sweep_setup_args *a, curve_table *t
     }
     for (int c = 0; a->n_items == 0 && status == SC_EXIT_OK && c < MAX_CURVES && p->curves[c].spec;
          c++)
-        status = add_curve(t, plan, p->curves[c].column, p->curves[c].spec,
-                           p->curves[c].legend);
+        status = add_curve(t, plan, p->curves[c].column, p->curves[c].spec, p->curves[c].legend);
     return status;
 }
 

@@ -157,7 +157,9 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
     for (int k = 0; moves_l(s) && k < s->setup.n_lights; k++)
         if (w->lights[k].kind == SC_LIGHT_DIRECTIONAL)
             memcpy(w->lights[k].dir, l, sizeof l);
-    sc_scene scene = {w->lights, s->setup.n_lights, w->model,
+    sc_scene scene = {w->lights,
+                      s->setup.n_lights,
+                      w->model,
                       {s->setup.ambient[0], s->setup.ambient[1], s->setup.ambient[2]}};
     sc_shade_result r = {.per_light = NULL};
     sc_shade(s->prec, &scene, &at, &r);
@@ -190,8 +192,8 @@ static int apply_item(shade_plan *s, const sweep_item *item, const double *row1)
         return SC_EXIT_USAGE;
     }
     if (templated)
-        s->templates[s->n_templates++] =
-            (template_spec){item->arg, item->opt == 'l' ? s->setup.n_lights : -1};
+        s->templates[s->n_templates++] = (template_spec){item->arg,
+                                                         item->opt == 'l' ? s->setup.n_lights : -1};
     switch (item->opt) {
     case 'l': return setup_add_light(&s->setup, text, "");
     case 'b': return setup_set_model(&s->setup, text, "");
@@ -219,9 +221,10 @@ static int check_angles(const shade_plan *s)
     }
     if (s->brdf_only && s->setup.model.kind != SC_MODEL_BRDF) {
         sc_error("sweep: --brdf %s is a lighting model, not a BRDF: give a --light to shade with "
-                 "it", s->setup.model.kind == SC_MODEL_ADS      ? "ads"
-                       : s->setup.model.kind == SC_MODEL_OPENGL ? "opengl"
-                                                                : "direct3d9");
+                 "it",
+                 s->setup.model.kind == SC_MODEL_ADS      ? "ads"
+                 : s->setup.model.kind == SC_MODEL_OPENGL ? "opengl"
+                                                          : "direct3d9");
         return SC_EXIT_USAGE;
     }
     return SC_EXIT_OK;
@@ -270,8 +273,8 @@ static void describe(const shade_plan *s, const sweep_setup_args *a, sweep_plan 
     size_t n = 0;
     for (int i = 0; i < a->n_items && n < sizeof plan->title; i++)
         if (a->items[i].opt == 'l' || a->items[i].opt == 'b')
-            n += (size_t)snprintf(plan->title + n, sizeof plan->title - n, "%s%s",
-                                  n ? ", " : "", a->items[i].arg);
+            n += (size_t)snprintf(plan->title + n, sizeof plan->title - n, "%s%s", n ? ", " : "",
+                                  a->items[i].arg);
     if (n == 0)
         snprintf(plan->title, sizeof plan->title, "%s", s->brdf_only ? "lambert" : "shade");
     plan->ylabel = s->brdf_only ? "f(l, v) [1/sr]" : "L_o";

@@ -277,8 +277,8 @@ static int check_signature(const builtin *b, const sc_type *args, char *msg, int
         if (b->sig[i] != 'g')
             continue;
         if (args[i] != args[g] || (args[i] != SC_FLOAT && args[i] != args[gen])) {
-            snprintf(msg, (size_t)msg_size, "%s: argument %d is %s, expected float or %s",
-                     b->name, i + 1, sc_type_name(args[i]), sc_type_name(args[gen]));
+            snprintf(msg, (size_t)msg_size, "%s: argument %d is %s, expected float or %s", b->name,
+                     i + 1, sc_type_name(args[i]), sc_type_name(args[gen]));
             return -1;
         }
     }
@@ -319,8 +319,8 @@ int sc_builtin_resolve(const char *name, int name_len, const sc_type *args, int 
         snprintf(msg, (size_t)msg_size, "%.*s: expects %d argument%s, got %d", name_len, name,
                  arities[0], arities[0] == 1 ? "" : "s", n_args);
     else
-        snprintf(msg, (size_t)msg_size, "%.*s: expects %d or %d arguments, got %d", name_len,
-                 name, arities[0], arities[1], n_args);
+        snprintf(msg, (size_t)msg_size, "%.*s: expects %d or %d arguments, got %d", name_len, name,
+                 arities[0], arities[1], n_args);
     return -1;
 }
 

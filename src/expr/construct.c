@@ -3,8 +3,7 @@
 
 #include "expr/expr_internal.h"
 
-static const char *const type_names[] = {"float", "vec2", "vec3", "vec4",
-                                         "mat2",  "mat3", "mat4"};
+static const char *const type_names[] = {"float", "vec2", "vec3", "vec4", "mat2", "mat3", "mat4"};
 static const int type_sizes[] = {1, 2, 3, 4, 4, 9, 16};
 
 const char *sc_type_name(sc_type t) { return type_names[t]; }

@@ -12,10 +12,7 @@
 
 static const double PI = 3.14159265358979323846, LN2 = 0.69314718055994530942;
 
-static sc_value zero_of(sc_type t)
-{
-    return (sc_value){t, {0}};
-}
+static sc_value zero_of(sc_type t) { return (sc_value){t, {0}}; }
 
 static sc_dual_value constant(sc_value x)
 {
@@ -24,20 +21,14 @@ static sc_dual_value constant(sc_value x)
 }
 
 /* Component k of v, a float broadcasting to every k. */
-static double comp(const sc_value *v, int k)
-{
-    return v->v[v->type == SC_FLOAT ? 0 : k];
-}
+static double comp(const sc_value *v, int k) { return v->v[v->type == SC_FLOAT ? 0 : k]; }
 
 static sc_value binary(int op, sc_type type, const sc_value *a, const sc_value *b)
 {
     return sc_expr_binary(SC_DOUBLE, op, type, a, b);
 }
 
-static sc_value add(const sc_value *a, const sc_value *b)
-{
-    return binary('+', a->type, a, b);
-}
+static sc_value add(const sc_value *a, const sc_value *b) { return binary('+', a->type, a, b); }
 
 static sc_value scaled(const sc_value *a, double s)
 {
@@ -204,10 +195,7 @@ static void d_sqrt(const double *a, double f, double *df)
     (void)a;
     df[0] = 0.5 / f;
 }
-static void d_inversesqrt(const double *a, double f, double *df)
-{
-    df[0] = -0.5 * f / a[0];
-}
+static void d_inversesqrt(const double *a, double f, double *df) { df[0] = -0.5 * f / a[0]; }
 static void d_abs(const double *a, double f, double *df)
 {
     (void)f;

@@ -13,15 +13,15 @@
 #include "shadecalc/expr.h"
 
 typedef enum {
-    NODE_NUMBER,  /* num */
-    NODE_INPUT,   /* op = input index */
-    NODE_SLOT,    /* op = statement index (its value is values[op]) */
-    NODE_NEGATE,  /* one child */
-    NODE_BINARY,  /* op = '+' '-' '*' '/'; two children */
-    NODE_CALL,    /* op = built-in index; children are the arguments */
+    NODE_NUMBER,    /* num */
+    NODE_INPUT,     /* op = input index */
+    NODE_SLOT,      /* op = statement index (its value is values[op]) */
+    NODE_NEGATE,    /* one child */
+    NODE_BINARY,    /* op = '+' '-' '*' '/'; two children */
+    NODE_CALL,      /* op = built-in index; children are the arguments */
     NODE_CONSTRUCT, /* type = the constructed type; children are the arguments */
-    NODE_SWIZZLE, /* one child; count2 components in swz */
-    NODE_INDEX    /* one child; op = the literal index */
+    NODE_SWIZZLE,   /* one child; count2 components in swz */
+    NODE_INDEX      /* one child; op = the literal index */
 } node_kind;
 
 typedef struct {

@@ -62,7 +62,10 @@ static int fail(parser *ps, int column, const char *fmt, const char *a, const ch
     return -1;
 }
 
-static int fail_msg(parser *ps, int column, const char *msg) { return fail(ps, column, "%s", msg, ""); }
+static int fail_msg(parser *ps, int column, const char *msg)
+{
+    return fail(ps, column, "%s", msg, "");
+}
 
 /* The current token, quoted for a message. */
 static const char *describe(const token *t, char *buf, size_t size)
@@ -78,7 +81,8 @@ static int fail_expected(parser *ps, const char *what)
     char buf[32];
     if (ps->tok.kind == TOK_BAD)
         return fail(ps, ps->tok.column, "unexpected %s", describe(&ps->tok, buf, sizeof buf), "");
-    return fail(ps, ps->tok.column, "expected %s, found %s", what, describe(&ps->tok, buf, sizeof buf));
+    return fail(ps, ps->tok.column, "expected %s, found %s", what,
+                describe(&ps->tok, buf, sizeof buf));
 }
 
 /* ---- lexer ---- */
@@ -308,11 +312,13 @@ static int parse_identifier(parser *ps)
     snprintf(buf, sizeof buf, "%.*s", name.len, name.start);
     if (!sym) {
         sc_type t;
-        if (type_from_name(name.start, name.len, &t) == 0 || sc_builtin_exists(name.start, name.len))
+        if (type_from_name(name.start, name.len, &t) == 0 ||
+            sc_builtin_exists(name.start, name.len))
             return fail(ps, name.column, "'%s' is a function: expected '(' after it", buf, "");
         return fail(ps, name.column, "unknown variable '%s'", buf, "");
     }
-    expr_node node = {.kind = sym->kind, .type = sym->type, .column = name.column, .op = sym->index};
+    expr_node node = {
+        .kind = sym->kind, .type = sym->type, .column = name.column, .op = sym->index};
     return add_node(ps, node, 0);
 }
 
@@ -378,8 +384,8 @@ static int parse_swizzle(parser *ps, int base)
     for (int i = 0; i < t.len; i++) {
         int set, k = swizzle_component(t.start[i], &set);
         if (k < 0 || k >= sc_type_size(bt))
-            return fail(ps, t.column, "swizzle '%s' names a component a %s does not have",
-                        letters, sc_type_name(bt));
+            return fail(ps, t.column, "swizzle '%s' names a component a %s does not have", letters,
+                        sc_type_name(bt));
         if (first_set >= 0 && set != first_set)
             return fail(ps, t.column, "swizzle '%s' mixes component sets (xyzw, rgba, stpq)",
                         letters, "");
@@ -484,7 +490,8 @@ static int parse_unary(parser *ps)
         if (operand < 0 || op.start[0] == '+')
             result = operand;
         else {
-            expr_node node = {.kind = NODE_NEGATE, .type = type_of(ps, operand), .column = op.column};
+            expr_node node = {
+                .kind = NODE_NEGATE, .type = type_of(ps, operand), .column = op.column};
             result = add_node(ps, node, 1);
         }
     } else {

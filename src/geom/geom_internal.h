@@ -24,10 +24,7 @@ struct sc_surface {
 /* Sets closed_u/closed_v of a user surface by sampling (surface.h). */
 void sc_surface_detect_closed(sc_surface *s);
 
-static inline sc_dvec3 sc_dvec3_from(const double *a)
-{
-    return (sc_dvec3){a[0], a[1], a[2]};
-}
+static inline sc_dvec3 sc_dvec3_from(const double *a) { return (sc_dvec3){a[0], a[1], a[2]}; }
 
 /* v·2^-k, k the binary exponent of its largest |component| (exact): the largest component in
  * [1, 2), so that a cross product or a squared length of such vectors neither overflows nor

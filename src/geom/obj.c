@@ -245,7 +245,7 @@ static int read_stream(obj_reader *r, FILE *f, sc_mesh *out)
     while (status == 0 && (len = getline(&line, &cap, f)) >= 0) {
         r->line++;
         status = memchr(line, '\0', (size_t)len) ? fail(r, "a NUL byte in", line, (int)strlen(line))
-                                                  : read_line(r, line);
+                                                 : read_line(r, line);
     }
     free(line);
     if (status == 0 && ferror(f)) {

@@ -134,10 +134,7 @@ static void normal_derivatives(const sc_surface *s, double u, double v, sc_surfa
 }
 
 /* One step of δ toward ½ (down from ½ itself). */
-static double toward_centre(double t, double delta)
-{
-    return t < 0.5 ? t + delta : t - delta;
-}
+static double toward_centre(double t, double delta) { return t < 0.5 ? t + delta : t - delta; }
 
 /* surface.h: the limit of the normal from inside, the normal a step δ = 2⁻³⁰, 2⁻²⁰, 2⁻¹⁰
  * toward the centre of the parameter square; (0, 0, 1) if all of them are degenerate too. */
@@ -163,14 +160,8 @@ void sc_surface_eval(const sc_surface *s, double u, double v, sc_surface_point *
         fallback_normal(s, u, v, out->n);
 }
 
-int sc_surface_closed_u(const sc_surface *s)
-{
-    return s->closed_u;
-}
-int sc_surface_closed_v(const sc_surface *s)
-{
-    return s->closed_v;
-}
+int sc_surface_closed_u(const sc_surface *s) { return s->closed_u; }
+int sc_surface_closed_v(const sc_surface *s) { return s->closed_v; }
 
 /* surface.h: a user surface is closed in u if S(0,t) = S(1,t) at t = 0, ⅛, ..., 1 within 1e-9
  * of its size (the largest coordinate seen); `along_v` tests S(t,0) = S(t,1) instead. */

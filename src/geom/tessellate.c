@@ -51,10 +51,7 @@ typedef struct {
     sc_mesh *m;
 } grid;
 
-static int vertex_index(const grid *g, int i, int j)
-{
-    return j * (g->nu + 1) + i;
-}
+static int vertex_index(const grid *g, int i, int j) { return j * (g->nu + 1) + i; }
 
 static void copy_vertex(sc_mesh *m, int to, int from, int with_normal)
 {

@@ -184,9 +184,8 @@ static const struct {
     const char *name;
     exr_compression_t exr;
 } compressions[SC_EXR_COMPRESSION_COUNT] = {
-    {"none", EXR_COMPRESSION_NONE}, {"rle", EXR_COMPRESSION_RLE},
-    {"zips", EXR_COMPRESSION_ZIPS}, {"zip", EXR_COMPRESSION_ZIP},
-    {"piz", EXR_COMPRESSION_PIZ},   {"pxr24", EXR_COMPRESSION_PXR24},
+    {"none", EXR_COMPRESSION_NONE}, {"rle", EXR_COMPRESSION_RLE}, {"zips", EXR_COMPRESSION_ZIPS},
+    {"zip", EXR_COMPRESSION_ZIP},   {"piz", EXR_COMPRESSION_PIZ}, {"pxr24", EXR_COMPRESSION_PXR24},
 };
 
 const char *sc_exr_compression_name(sc_exr_compression c)
@@ -206,9 +205,8 @@ int sc_exr_compression_parse(const char *name, sc_exr_compression *out)
 
 /* One scanline part: required attributes, the compression, the channels, the channel order,
  * the caller's string attributes; then the header is written. */
-static exr_result_t define_header(exr_context_t ctx, const sc_image *img,
-                                  const sc_exr_options *opt, const sc_image_attr *attrs,
-                                  int n_attrs)
+static exr_result_t define_header(exr_context_t ctx, const sc_image *img, const sc_exr_options *opt,
+                                  const sc_image_attr *attrs, int n_attrs)
 {
     int part = 0;
     exr_pixel_type_t type = opt->type == SC_PIXEL_HALF ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT;
@@ -319,8 +317,8 @@ typedef struct {
 } chunk_worker;
 
 /* A worker's context writes only its header, to nowhere. */
-static int64_t discard_write(exr_const_context_t ctxt, void *user, const void *buffer,
-                             uint64_t sz, uint64_t offset, exr_stream_error_func_ptr_t error_cb)
+static int64_t discard_write(exr_const_context_t ctxt, void *user, const void *buffer, uint64_t sz,
+                             uint64_t offset, exr_stream_error_func_ptr_t error_cb)
 {
     (void)ctxt;
     (void)user;
@@ -411,8 +409,7 @@ static int open_worker(chunk_worker *w)
         return fail(&w->stream, "out of memory");
     if (check(&w->stream, exr_start_write(&w->ctx, job->name, EXR_WRITE_FILE_DIRECTLY, &init)))
         return -1;
-    return check(&w->stream,
-                 define_header(w->ctx, job->img, job->opt, job->attrs, job->n_attrs));
+    return check(&w->stream, define_header(w->ctx, job->img, job->opt, job->attrs, job->n_attrs));
 }
 
 /* Takes chunks until none is left or a worker failed. */
@@ -455,7 +452,8 @@ static int compress_chunks(chunk_job *job, exr_stream *s)
     int n = worker_count(job->opt, job->n_chunks), started = 1;
     for (int i = 0; i < n; i++)
         workers[i] = (chunk_worker){.job = job};
-    while (started < n && pthread_create(&threads[started], NULL, run_worker, &workers[started]) == 0)
+    while (started < n &&
+           pthread_create(&threads[started], NULL, run_worker, &workers[started]) == 0)
         started++;
     run_worker(&workers[0]);
     for (int i = 1; i < started; i++)
@@ -766,8 +764,8 @@ static int collect_attrs(exr_const_context_t ctx, exr_stream *s, sc_image_attr *
             a->type != EXR_ATTR_STRING || strcmp(a->name, "type") == 0)
             continue;
         list[n].name = copy_bytes(a->name, strlen(a->name));
-        list[n].value =
-            copy_bytes(a->string->str, a->string->length > 0 ? (size_t)a->string->length : 0);
+        list[n].value = copy_bytes(a->string->str,
+                                   a->string->length > 0 ? (size_t)a->string->length : 0);
         if (!list[n++].value || !list[n - 1].name) {
             sc_image_attrs_free(list, n);
             return fail(s, "out of memory");

@@ -54,10 +54,7 @@ static int register_temp(const char *temp)
     return -1;
 }
 
-static void unregister_temp(int slot)
-{
-    atomic_store(&slot_state[slot], SLOT_FREE);
-}
+static void unregister_temp(int slot) { atomic_store(&slot_state[slot], SLOT_FREE); }
 
 /* SIGINT, SIGTERM, SIGHUP: remove every live temporary, then die of the signal (the handler is
  * installed with SA_RESETHAND, so raise() gets the default action). Whichever thread runs it, the
@@ -89,10 +86,7 @@ int sc_atomic_remove_on_signals(void)
     return signal(SIGXFSZ, SIG_IGN) == SIG_ERR ? -1 : 0;
 }
 
-void sc_atomic_allow_read_only(int allow)
-{
-    atomic_store(&read_only_allowed, allow != 0);
-}
+void sc_atomic_allow_read_only(int allow) { atomic_store(&read_only_allowed, allow != 0); }
 
 /* ---- paths ---- */
 
@@ -304,8 +298,7 @@ static int open_target(sc_atomic_file *f, char *err, size_t errsize)
         report(err, errsize, f->path, EISDIR);
         return -1;
     }
-    return S_ISREG(st.st_mode) ? open_replacement(f, err, errsize)
-                               : open_straight(f, err, errsize);
+    return S_ISREG(st.st_mode) ? open_replacement(f, err, errsize) : open_straight(f, err, errsize);
 }
 
 sc_atomic_file *sc_atomic_open(const char *path, char *err, size_t errsize)
@@ -324,10 +317,7 @@ sc_atomic_file *sc_atomic_open(const char *path, char *err, size_t errsize)
     return f;
 }
 
-FILE *sc_atomic_stream(sc_atomic_file *f)
-{
-    return f->stream;
-}
+FILE *sc_atomic_stream(sc_atomic_file *f) { return f->stream; }
 
 const char *sc_atomic_temp_path(const sc_atomic_file *f)
 {

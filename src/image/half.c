@@ -16,7 +16,7 @@ static void software_halves(const float *in, uint16_t *out, size_t n)
 /* VCVTPS2PH rounds to nearest even like the software path, but keeps a NaN's payload: each NaN
  * becomes the quiet NaN of its sign first, which converts to sign | 0x7e00. */
 __attribute__((target("avx,f16c"))) static size_t f16c_halves(const float *in, uint16_t *out,
-                                                               size_t n)
+                                                              size_t n)
 {
     const __m256 sign_bit = _mm256_set1_ps(-0.0f);
     const __m256 quiet_nan = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fc00000));

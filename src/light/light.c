@@ -338,16 +338,17 @@ int sc_params_in_range(sc_prec p, const sc_param *params, int count, char *msg, 
 
 int sc_light_check_range(sc_prec p, const sc_light *l, char *msg, size_t size)
 {
-    const sc_param params[] = {
-        {"I", l->intensity, 3},           {"amb", l->ambient, 3},       {"diff", l->diffuse, 3},
-        {"spec", l->specular, 3},         {"dir", l->dir, 3},           {"pos", l->pos, 3},
-        {"sc", &l->atten.sc, 1},          {"sl", &l->atten.sl, 1},      {"sq", &l->atten.sq, 1},
-        {"rstart", &l->atten.r_start, 1}, {"rend", &l->atten.r_end, 1}, {"fmax", &l->atten.f_max, 1},
-        {"fc", &l->atten.f_c, 1},         {"rc", &l->atten.r_c, 1},     {"se", &l->atten.s_e, 1},
-        {"rmax", &l->atten.r_max, 1},     {"exp", &l->spot.exponent, 1}};
+    const sc_param params[] = {{"I", l->intensity, 3},       {"amb", l->ambient, 3},
+                               {"diff", l->diffuse, 3},      {"spec", l->specular, 3},
+                               {"dir", l->dir, 3},           {"pos", l->pos, 3},
+                               {"sc", &l->atten.sc, 1},      {"sl", &l->atten.sl, 1},
+                               {"sq", &l->atten.sq, 1},      {"rstart", &l->atten.r_start, 1},
+                               {"rend", &l->atten.r_end, 1}, {"fmax", &l->atten.f_max, 1},
+                               {"fc", &l->atten.f_c, 1},     {"rc", &l->atten.r_c, 1},
+                               {"se", &l->atten.s_e, 1},     {"rmax", &l->atten.r_max, 1},
+                               {"exp", &l->spot.exponent, 1}};
     return sc_params_in_range(p, params, (int)(sizeof params / sizeof params[0]), msg, size);
 }
-
 
 int sc_light_validate(const sc_light *light, char *msg, size_t size)
 {

@@ -35,9 +35,24 @@ const int sc_accuracy_count = (int)(sizeof sc_accuracy_table / sizeof sc_accurac
 /* The special-value table of the issue: ±0, ±subnormal min/max, ±FLT_MIN, 0.5, 1, 2, ±FLT_MAX,
  * ±Inf, NaN, and −1, −0.5, −2. */
 static const float specials[] = {
-    0.0f,       -0.0f,       0x1p-149f,  -0x1p-149f, 0x1.fffffcp-127f, -0x1.fffffcp-127f,
-    FLT_MIN,    -FLT_MIN,    0.5f,       -0.5f,      1.0f,             -1.0f,
-    2.0f,       -2.0f,       FLT_MAX,    -FLT_MAX,   INFINITY,         -INFINITY,
+    0.0f,
+    -0.0f,
+    0x1p-149f,
+    -0x1p-149f,
+    0x1.fffffcp-127f,
+    -0x1.fffffcp-127f,
+    FLT_MIN,
+    -FLT_MIN,
+    0.5f,
+    -0.5f,
+    1.0f,
+    -1.0f,
+    2.0f,
+    -2.0f,
+    FLT_MAX,
+    -FLT_MAX,
+    INFINITY,
+    -INFINITY,
     NAN,
 };
 enum { N_SPECIALS = (int)(sizeof specials / sizeof specials[0]) };
@@ -150,8 +165,9 @@ void sc_accuracy_measure(const sc_accuracy_row *r, long n_random, uint64_t seed,
             if (focus)
                 a[i] = sc_accuracy_sample(&state, 0.5, 2.0);
             else if ((k & 3) == 1) /* uniform in value: the large arguments of trig */
-                a[i] = (float)(r->lo[i] + (r->hi[i] - r->lo[i]) *
-                                              ((double)(sc_accuracy_random(&state) >> 11) * 0x1p-53));
+                a[i] = (float)(r->lo[i] +
+                               (r->hi[i] - r->lo[i]) *
+                                   ((double)(sc_accuracy_random(&state) >> 11) * 0x1p-53));
             else
                 a[i] = sc_accuracy_sample(&state, r->lo[i], r->hi[i]);
         }

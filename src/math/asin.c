@@ -23,24 +23,20 @@
 #include "shadecalc/glsl.h"
 
 /* cos(asin x) = √((1 − x)(1 + x)); NaN for |x| > 1. */
-static double cosine_of_asin(double x) {
-    return sqrt((1.0 - x) * (1.0 + x));
-}
+static double cosine_of_asin(double x) { return sqrt((1.0 - x) * (1.0 + x)); }
 
-double sc_k_asin_core(float x) {
+double sc_k_asin_core(float x)
+{
     double xd = (double)x;
     return sc_k_atan2(xd, cosine_of_asin(xd));
 }
 
-double sc_k_acos_core(float x) {
+double sc_k_acos_core(float x)
+{
     double xd = (double)x;
     return sc_k_atan2(cosine_of_asin(xd), xd);
 }
 
-float sc_asinf(float x) {
-    return (float)sc_k_asin_core(x);
-}
+float sc_asinf(float x) { return (float)sc_k_asin_core(x); }
 
-float sc_acosf(float x) {
-    return (float)sc_k_acos_core(x);
-}
+float sc_acosf(float x) { return (float)sc_k_acos_core(x); }

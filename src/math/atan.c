@@ -43,7 +43,8 @@ static const double atan_coef[16] = {1.0,      -1.0 / 3,  1.0 / 5,  -1.0 / 7,  1
                                      1.0 / 25, -1.0 / 27, 1.0 / 29, -1.0 / 31};
 
 /* atan(t), 0 <= t <= 1 */
-static double atan_unit(double t) {
+static double atan_unit(double t)
+{
     double base = 0.0;
     if (t > tan_pi_12) {
         t = (sqrt3 * t - 1.0) / (sqrt3 + t);
@@ -52,14 +53,17 @@ static double atan_unit(double t) {
     return base + t * sc_k_horner(t * t, atan_coef, 16);
 }
 
-double sc_k_atan(double x) {
+double sc_k_atan(double x)
+{
     double t = fabs(x);
     double a = t <= 1.0 ? atan_unit(t) : pi / 2.0 - atan_unit(1.0 / t);
     return signbit(x) ? -a : a; /* atan(−0) = −0 */
 }
 
-double sc_k_atan2(double y, double x) {
-    if (x != x || y != y) return x + y;
+double sc_k_atan2(double y, double x)
+{
+    if (x != x || y != y)
+        return x + y;
     double ay = fabs(y), ax = fabs(x), a;
     if (ay == INFINITY && ax == INFINITY)
         a = pi / 4.0;
@@ -69,7 +73,8 @@ double sc_k_atan2(double y, double x) {
         a = atan_unit(ay / ax);
     else
         a = pi / 2.0 - atan_unit(ax / ay);
-    if (signbit(x)) a = pi - a; /* left half-plane, including x = −0 */
+    if (signbit(x))
+        a = pi - a; /* left half-plane, including x = −0 */
     return signbit(y) ? -a : a;
 }
 
@@ -78,21 +83,16 @@ double sc_k_atan2(double y, double x) {
  * ULP (atan(0.0690520033) = 0.06894256547093391601248...). */
 static const sc_k_hard_case atan_hard_cases[] = {{0x3d8d6b23, 0x1.1a63850000001p-4}};
 
-double sc_k_atan_core(float x) {
+double sc_k_atan_core(float x)
+{
     double r = sc_k_atan((double)x);
     if (!sc_k_near_midpoint(r, 0x1p-46))
         return r;
     return copysign(sc_k_lookup_hard(atan_hard_cases, 1, fabsf(x), fabs(r)), r);
 }
 
-double sc_k_atan2_core(float y, float x) {
-    return sc_k_atan2((double)y, (double)x);
-}
+double sc_k_atan2_core(float y, float x) { return sc_k_atan2((double)y, (double)x); }
 
-float sc_atanf(float y_over_x) {
-    return (float)sc_k_atan_core(y_over_x);
-}
+float sc_atanf(float y_over_x) { return (float)sc_k_atan_core(y_over_x); }
 
-float sc_atan2f(float y, float x) {
-    return (float)sc_k_atan2_core(y, x);
-}
+float sc_atan2f(float y, float x) { return (float)sc_k_atan2_core(y, x); }

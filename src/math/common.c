@@ -20,47 +20,22 @@
 
 #include "shadecalc/glsl.h"
 
-float sc_radiansf(float degrees) {
-    return degrees * (float)(3.14159265358979323846 / 180.0);
-}
-float sc_degreesf(float radians) {
-    return radians * (float)(180.0 / 3.14159265358979323846);
-}
-float sc_absf(float x) {
-    return fabsf(x);
-}
-float sc_signf(float x) {
-    return x > 0.0f ? 1.0f : x < 0.0f ? -1.0f : 0.0f * x;
-}
-float sc_floorf(float x) {
-    return floorf(x);
-}
-float sc_ceilf(float x) {
-    return ceilf(x);
-}
-float sc_fractf(float x) {
-    return x - floorf(x);
-}
-float sc_modf(float x, float y) {
-    return x - y * floorf(x / y);
-}
-float sc_minf(float x, float y) {
-    return y < x ? y : x;
-}
-float sc_maxf(float x, float y) {
-    return x < y ? y : x;
-}
-float sc_clampf(float x, float lo, float hi) {
-    return sc_minf(sc_maxf(x, lo), hi);
-}
-float sc_mixf(float x, float y, float a) {
-    return x * (1.0f - a) + y * a;
-}
-float sc_stepf(float edge, float x) {
-    return x < edge ? 0.0f : 1.0f;
-}
+float sc_radiansf(float degrees) { return degrees * (float)(3.14159265358979323846 / 180.0); }
+float sc_degreesf(float radians) { return radians * (float)(180.0 / 3.14159265358979323846); }
+float sc_absf(float x) { return fabsf(x); }
+float sc_signf(float x) { return x > 0.0f ? 1.0f : x < 0.0f ? -1.0f : 0.0f * x; }
+float sc_floorf(float x) { return floorf(x); }
+float sc_ceilf(float x) { return ceilf(x); }
+float sc_fractf(float x) { return x - floorf(x); }
+float sc_modf(float x, float y) { return x - y * floorf(x / y); }
+float sc_minf(float x, float y) { return y < x ? y : x; }
+float sc_maxf(float x, float y) { return x < y ? y : x; }
+float sc_clampf(float x, float lo, float hi) { return sc_minf(sc_maxf(x, lo), hi); }
+float sc_mixf(float x, float y, float a) { return x * (1.0f - a) + y * a; }
+float sc_stepf(float edge, float x) { return x < edge ? 0.0f : 1.0f; }
 
-float sc_smoothstepf(float edge0, float edge1, float x) {
+float sc_smoothstepf(float edge0, float edge1, float x)
+{
     float t = sc_clampf((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);
 }

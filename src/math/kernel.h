@@ -84,6 +84,7 @@ double sc_k_atan2(double y, double x);
  * every input, special values included. Each one's error bound against the exact value is
  * stated, with its derivation, in the first comment of its source file; tests/exhaustive/
  * checks every binary32 input with those bounds (make exhaustive). */
+/* clang-format off */
 #define SC_K_CORE1(name) double sc_k_##name##_core(float x);
 SC_K_CORE1(exp) SC_K_CORE1(exp2) SC_K_CORE1(log) SC_K_CORE1(log2) SC_K_CORE1(sin) SC_K_CORE1(cos)
 SC_K_CORE1(tan) SC_K_CORE1(asin) SC_K_CORE1(acos) SC_K_CORE1(atan) SC_K_CORE1(sqrt)
@@ -91,5 +92,6 @@ SC_K_CORE1(inversesqrt)
 #undef SC_K_CORE1
 double sc_k_pow_core(float x, float y);
 double sc_k_atan2_core(float y, float x);
+/* clang-format on */
 
 #endif

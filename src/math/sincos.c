@@ -72,7 +72,8 @@ typedef struct {
 } reduced;
 
 /* The 32 bits of 2/π of weights 2^-i .. 2^-(i+31), for i >= -31 (zeros before the point). */
-static uint32_t two_over_pi_word(int i) {
+static uint32_t two_over_pi_word(int i)
+{
     int p = i + 31; /* bit offset into two_over_pi_bits */
     int j = p / 32, shift = p % 32;
     uint64_t pair = (uint64_t)two_over_pi_bits[j] << 32 | two_over_pi_bits[j + 1];
@@ -83,7 +84,8 @@ static uint32_t two_over_pi_word(int i) {
  * F = 0.b(e−1) b(e) … the bits of 2/π from weight 2^(1−e) (bits of larger weight add
  * multiples of 4). m·F is formed in six 32-bit limbs; its fraction gives k mod 4 and t = the
  * signed distance to the nearest k in units of π/2. */
-static reduced reduce_large(float x) {
+static reduced reduce_large(float x)
+{
     uint32_t bits;
     memcpy(&bits, &x, sizeof bits);
     uint64_t m = (bits & 0x7fffffu) | 0x800000u;
@@ -118,7 +120,8 @@ static reduced reduce_large(float x) {
     return out;
 }
 
-static reduced reduce(float x) {
+static reduced reduce(float x)
+{
     double xd = (double)x;
     if (!(xd > -cody_waite_limit && xd < cody_waite_limit)) {
         if (x - x != 0.0f) /* ±Inf, NaN */
@@ -130,44 +133,38 @@ static reduced reduce(float x) {
     return (reduced){r, (int)((int64_t)k & 3)};
 }
 
-static double sin_poly(double r) {
-    return r * sc_k_horner(r * r, sin_coef, 8);
-}
-static double cos_poly(double r) {
-    return sc_k_horner(r * r, cos_coef, 9);
-}
+static double sin_poly(double r) { return r * sc_k_horner(r * r, sin_coef, 8); }
+static double cos_poly(double r) { return sc_k_horner(r * r, cos_coef, 9); }
 
 /* sin(x) = sin r, cos r, −sin r, −cos r in quadrants 0..3; cos(x) = sin(x + π/2). */
-static double sin_quadrant(double r, int quadrant) {
+static double sin_quadrant(double r, int quadrant)
+{
     double v = quadrant & 1 ? cos_poly(r) : sin_poly(r);
     return quadrant & 2 ? -v : v;
 }
 
-double sc_k_sin_core(float x) {
+double sc_k_sin_core(float x)
+{
     reduced q = reduce(x);
     return sin_quadrant(q.r, q.quadrant);
 }
 
-double sc_k_cos_core(float x) {
+double sc_k_cos_core(float x)
+{
     reduced q = reduce(x);
     return sin_quadrant(q.r, (q.quadrant + 1) & 3);
 }
 
 /* tan(x) = tan r in even quadrants, −cot r in odd ones. */
-double sc_k_tan_core(float x) {
+double sc_k_tan_core(float x)
+{
     reduced q = reduce(x);
     double s = sin_poly(q.r), c = cos_poly(q.r);
     return q.quadrant & 1 ? -c / s : s / c;
 }
 
-float sc_sinf(float x) {
-    return (float)sc_k_sin_core(x);
-}
+float sc_sinf(float x) { return (float)sc_k_sin_core(x); }
 
-float sc_cosf(float x) {
-    return (float)sc_k_cos_core(x);
-}
+float sc_cosf(float x) { return (float)sc_k_cos_core(x); }
 
-float sc_tanf(float x) {
-    return (float)sc_k_tan_core(x);
-}
+float sc_tanf(float x) { return (float)sc_k_tan_core(x); }

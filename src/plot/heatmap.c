@@ -9,8 +9,15 @@
 
 #include "plot/plot_internal.h"
 
-enum { MAP_LEFT = 78, MAP_TOP = 44, MAP_SIZE = 480, MAP_BOTTOM = 58, BAR_GAP = 24,
-       BAR_WIDTH = 18, BAR_STEPS = 64 };
+enum {
+    MAP_LEFT = 78,
+    MAP_TOP = 44,
+    MAP_SIZE = 480,
+    MAP_BOTTOM = 58,
+    BAR_GAP = 24,
+    BAR_WIDTH = 18,
+    BAR_STEPS = 64
+};
 
 /* viridis (van der Walt and Smith, matplotlib 2015), sampled at nine evenly spaced points:
  * perceptually uniform and readable in grey and by colour-blind readers */
@@ -35,8 +42,8 @@ static void colour_of(double t, char out[8])
 
 typedef struct {
     int log;
-    double scale;   /* 2^exposure */
-    double lo, hi;  /* the values (after scaling) at 0 and 1 */
+    double scale;  /* 2^exposure */
+    double lo, hi; /* the values (after scaling) at 0 and 1 */
 } tone;
 
 static void tone_make(tone *t, const sc_heatmap *h)
@@ -139,7 +146,8 @@ static void write_cells(FILE *out, const sc_heatmap *h, const map_axis *ax, cons
             double left = map_place(ax, x0), right = map_place(ax, x1);
             char colour[8];
             colour_of(tone_map(t, h->values[j * h->nx + i]), colour);
-            fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
+            fprintf(out,
+                    "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
                     left, top, right - left, bottom - top, colour);
         }
     }
@@ -154,12 +162,15 @@ static void write_bar(FILE *out, const sc_heatmap *h, const tone *t, double x, d
         char colour[8];
         colour_of((k + 0.5) / BAR_STEPS, colour);
         double y = top + height * (1.0 - (k + 1.0) / BAR_STEPS);
-        fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%d\" height=\"%.2f\" fill=\"%s\" "
-                     "shape-rendering=\"crispEdges\"/>\n", x, y, BAR_WIDTH, height / BAR_STEPS + 0.5,
-                colour);
+        fprintf(out,
+                "<rect x=\"%.2f\" y=\"%.2f\" width=\"%d\" height=\"%.2f\" fill=\"%s\" "
+                "shape-rendering=\"crispEdges\"/>\n",
+                x, y, BAR_WIDTH, height / BAR_STEPS + 0.5, colour);
     }
-    fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%d\" height=\"%.2f\" fill=\"none\" "
-                 "stroke=\"#222\"/>\n", x, top, BAR_WIDTH, height);
+    fprintf(out,
+            "<rect x=\"%.2f\" y=\"%.2f\" width=\"%d\" height=\"%.2f\" fill=\"none\" "
+            "stroke=\"#222\"/>\n",
+            x, top, BAR_WIDTH, height);
     for (int k = 0; k <= 4; k++) { /* five labels, in the values' own units */
         double s = k / 4.0;
         fprintf(out, "<text x=\"%.2f\" y=\"%.2f\">%.3g</text>\n", x + BAR_WIDTH + 5,
@@ -167,8 +178,10 @@ static void write_bar(FILE *out, const sc_heatmap *h, const tone *t, double x, d
     }
     if (h->value_label) {
         double cy = top + height / 2.0, lx = x + BAR_WIDTH + 62;
-        fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" "
-                     "transform=\"rotate(90 %.2f %.2f)\">", lx, cy, lx, cy);
+        fprintf(out,
+                "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"middle\" "
+                "transform=\"rotate(90 %.2f %.2f)\">",
+                lx, cy, lx, cy);
         plot_xml_text(out, h->value_label);
         fprintf(out, " (%s%s)</text>\n", t->log ? "log scale" : "linear",
                 h->exposure != 0.0 ? ", exposure" : "");
@@ -192,8 +205,9 @@ int sc_plot_write_heatmap_svg(FILE *out, const sc_heatmap *h)
     height = fmax(height, MAP_TOP + value_w);
     plot_svg_begin(out, width, height, h->title ? h->title : "shadecalc heat map");
     write_cells(out, h, &ax, &ay, &t);
-    fprintf(out, "<g class=\"axes\" fill=\"#222\">\n<rect x=\"%d\" y=\"%d\" width=\"%d\" "
-                 "height=\"%d\" fill=\"none\" stroke=\"#222\"/>\n",
+    fprintf(out,
+            "<g class=\"axes\" fill=\"#222\">\n<rect x=\"%d\" y=\"%d\" width=\"%d\" "
+            "height=\"%d\" fill=\"none\" stroke=\"#222\"/>\n",
             MAP_LEFT, MAP_TOP, MAP_SIZE, MAP_SIZE);
     map_ticks(out, &ax, MAP_TOP + MAP_SIZE);
     map_ticks(out, &ay, MAP_LEFT);
@@ -203,7 +217,7 @@ int sc_plot_write_heatmap_svg(FILE *out, const sc_heatmap *h)
         plot_text_at(out, "title", width / 2.0, 26, " font-size=\"15\"", h->title);
     if (h->xlabel)
         plot_text_at(out, "xlabel", MAP_LEFT + MAP_SIZE / 2.0, MAP_TOP + MAP_SIZE + 44, "",
-                   h->xlabel);
+                     h->xlabel);
     if (h->ylabel) {
         char rotate[64];
         double cy = MAP_TOP + MAP_SIZE / 2.0;

@@ -10,9 +10,19 @@
 
 #include "plot/plot_internal.h"
 
-enum { WIDTH = 760, HEIGHT = 480, MARGIN_LEFT = 78, MARGIN_RIGHT = 24, MARGIN_TOP = 44,
-       MARGIN_BOTTOM = 58, POLAR_SIDE = 56, LEGEND_ROW = 18, LEGEND_SAMPLE = 34,
-       MARKERS_PER_CURVE = 8, POLAR_RANGE_ANGLE = 80 };
+enum {
+    WIDTH = 760,
+    HEIGHT = 480,
+    MARGIN_LEFT = 78,
+    MARGIN_RIGHT = 24,
+    MARGIN_TOP = 44,
+    MARGIN_BOTTOM = 58,
+    POLAR_SIDE = 56,
+    LEGEND_ROW = 18,
+    LEGEND_SAMPLE = 34,
+    MARKERS_PER_CURVE = 8,
+    POLAR_RANGE_ANGLE = 80
+};
 
 static const double RADIANS_PER_DEGREE = 0.017453292519943295; /* π/180 */
 
@@ -23,8 +33,8 @@ typedef struct {
 typedef enum { LEGEND_NONE, LEGEND_INSIDE, LEGEND_BELOW } legend_place;
 
 typedef struct {
-    double width, height; /* the canvas */
-    frame f;              /* cartesian plot area; polar: the half disc's bounding box */
+    double width, height;  /* the canvas */
+    frame f;               /* cartesian plot area; polar: the half disc's bounding box */
     double cx, cy, radius; /* polar */
     legend_place legend;
     double lx, ly, lw, lh; /* the legend's box */
@@ -73,8 +83,7 @@ static void write_tick_text(FILE *out, const plot_axis *a, double v, double x, d
 {
     char label[32];
     plot_tick_label(label, sizeof label, a, v);
-    fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"%s\">%s</text>\n", x, y, anchor,
-            label);
+    fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"%s\">%s</text>\n", x, y, anchor, label);
 }
 
 /* ---- cartesian ---- */
@@ -93,11 +102,12 @@ static void cartesian_axes(FILE *out, const frame *f, const plot_axis *x, const 
                 f->left + f->width, py);
     }
     fputs("</g>\n<g class=\"axes\" fill=\"#222\">\n", out);
-    fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"none\" "
-                 "stroke=\"#222\"/>\n", f->left, f->top, f->width, f->height);
+    fprintf(out,
+            "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"none\" "
+            "stroke=\"#222\"/>\n",
+            f->left, f->top, f->width, f->height);
     for (int i = 0; i < x->n_ticks; i++)
-        write_tick_text(out, x, x->ticks[i],
-                        f->left + plot_axis_place(x, x->ticks[i]) * f->width,
+        write_tick_text(out, x, x->ticks[i], f->left + plot_axis_place(x, x->ticks[i]) * f->width,
                         f->top + f->height + 17, "middle");
     for (int i = 0; i < y->n_ticks; i++)
         write_tick_text(out, y, y->ticks[i], f->left - 6,
@@ -123,8 +133,9 @@ static void reference_line(FILE *out, const sc_plot *p, const frame *f, const pl
     if (!p->has_reference || !shown(p->reference_y, y->log) || t < 0.0 || t > 1.0)
         return;
     double py = f->top + (1.0 - t) * f->height;
-    fprintf(out, "<g class=\"reference\" stroke=\"#555\" fill=\"#555\">\n<line x1=\"%.2f\" "
-                 "y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke-dasharray=\"3 3\"/>\n",
+    fprintf(out,
+            "<g class=\"reference\" stroke=\"#555\" fill=\"#555\">\n<line x1=\"%.2f\" "
+            "y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke-dasharray=\"3 3\"/>\n",
             f->left, py, f->left + f->width, py);
     if (p->reference_label) {
         fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" text-anchor=\"end\" stroke=\"none\">",
@@ -143,8 +154,8 @@ static void polar_axes(FILE *out, const layout *l, const plot_axis *r)
     fputs("<g class=\"grid\" stroke=\"#e0e0e0\" stroke-width=\"1\" fill=\"none\">\n", out);
     for (int i = 1; i < r->n_ticks; i++) {
         double rr = plot_axis_place(r, r->ticks[i]) * R;
-        fprintf(out, "<path d=\"M %.2f %.2f A %.2f %.2f 0 0 1 %.2f %.2f\"/>\n", cx - rr, cy, rr,
-                rr, cx + rr, cy);
+        fprintf(out, "<path d=\"M %.2f %.2f A %.2f %.2f 0 0 1 %.2f %.2f\"/>\n", cx - rr, cy, rr, rr,
+                cx + rr, cy);
     }
     for (int deg = -90; deg <= 90; deg += 15)
         fprintf(out, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n", cx, cy,
@@ -169,8 +180,8 @@ static void polar_axes(FILE *out, const layout *l, const plot_axis *r)
 /* Pixel position of value `value` at `deg` from the normal; 0 if it is not drawn: not finite,
  * or on the horizon itself (|deg| >= 90), where the direction lies in the surface and a value
  * would only draw a line along the horizon. */
-static int polar_point(const layout *l, const plot_axis *r, double deg, double value,
-                       double *px, double *py)
+static int polar_point(const layout *l, const plot_axis *r, double deg, double value, double *px,
+                       double *py)
 {
     if (!isfinite(deg) || !isfinite(value) || fabs(deg) >= 90.0)
         return 0;
@@ -186,9 +197,10 @@ static void polar_clip_note(FILE *out, const sc_plot *p, const layout *l, const 
     double lo = 0.0, hi = 0.0;
     if (!isnan(p->ymax) || !data_range(p, 1, 0, 89.999, &lo, &hi) || hi <= r->hi)
         return;
-    fprintf(out, "<text class=\"note\" x=\"%.2f\" y=\"44\" text-anchor=\"middle\" "
-                 "font-size=\"11\" fill=\"#555\">radius scaled to the values within %d° of "
-                 "the normal; larger values near the horizon (up to %.3g) are clipped</text>\n",
+    fprintf(out,
+            "<text class=\"note\" x=\"%.2f\" y=\"44\" text-anchor=\"middle\" "
+            "font-size=\"11\" fill=\"#555\">radius scaled to the values within %d° of "
+            "the normal; larger values near the horizon (up to %.3g) are clipped</text>\n",
             l->width / 2.0, POLAR_RANGE_ANGLE, hi);
 }
 
@@ -198,22 +210,24 @@ static void incident_arrow(FILE *out, const layout *l, int s, double deg)
     double sx = sin(deg * RADIANS_PER_DEGREE), cy = -cos(deg * RADIANS_PER_DEGREE);
     double x0 = l->cx + l->radius * sx, y0 = l->cy + l->radius * cy;
     double x1 = l->cx + 0.1 * l->radius * sx, y1 = l->cy + 0.1 * l->radius * cy;
-    fprintf(out, "<g class=\"incident\" stroke=\"%s\" fill=\"%s\" stroke-width=\"1.2\">\n"
-                 "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke-dasharray=\"%s\"/>\n",
+    fprintf(out,
+            "<g class=\"incident\" stroke=\"%s\" fill=\"%s\" stroke-width=\"1.2\">\n"
+            "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke-dasharray=\"%s\"/>\n",
             plot_colour(s), plot_colour(s), x0, y0, x1, y1, plot_dashes(s));
     double px = -cy, py = sx; /* perpendicular to the arrow: its head */
     fprintf(out, "<path d=\"M %.2f %.2f L %.2f %.2f L %.2f %.2f z\"/>\n", x1, y1,
             x1 + 10 * sx + 4 * px, y1 + 10 * cy + 4 * py, x1 + 10 * sx - 4 * px,
             y1 + 10 * cy - 4 * py);
-    fprintf(out, "<text x=\"%.2f\" y=\"%.2f\" stroke=\"none\" text-anchor=\"middle\">l</text>\n"
-                 "</g>\n", l->cx + (l->radius - 12) * sx + 8 * px,
-            l->cy + (l->radius - 12) * cy + 8 * py);
+    fprintf(out,
+            "<text x=\"%.2f\" y=\"%.2f\" stroke=\"none\" text-anchor=\"middle\">l</text>\n"
+            "</g>\n",
+            l->cx + (l->radius - 12) * sx + 8 * px, l->cy + (l->radius - 12) * cy + 8 * py);
 }
 
 /* ---- curves ---- */
 
-static int curve_point(const sc_plot *p, const layout *l, const plot_axis *x,
-                       const plot_axis *y, int s, size_t i, double *px, double *py)
+static int curve_point(const sc_plot *p, const layout *l, const plot_axis *x, const plot_axis *y,
+                       int s, size_t i, double *px, double *py)
 {
     const sc_plot_series *c = &p->series[s];
     return p->polar ? polar_point(l, y, c->x[i], c->y[i], px, py)
@@ -241,8 +255,10 @@ static void write_series(FILE *out, const sc_plot *p, const layout *l, const plo
     const sc_plot_series *c = &p->series[s];
     fputs("<g class=\"series\" data-label=\"", out);
     plot_xml_text(out, c->label);
-    fprintf(out, "\" fill=\"white\" stroke=\"%s\" stroke-width=\"1.6\" "
-                 "clip-path=\"url(#plot-area)\">\n", plot_colour(s));
+    fprintf(out,
+            "\" fill=\"white\" stroke=\"%s\" stroke-width=\"1.6\" "
+            "clip-path=\"url(#plot-area)\">\n",
+            plot_colour(s));
     int open = 0;
     for (size_t i = 0; i < c->n; i++) {
         double px, py;
@@ -281,8 +297,8 @@ static int legend_entries(const sc_plot *p, double *widest)
 }
 
 /* The number of curve points inside the box (x, y, w, h), with a margin of 4 pixels. */
-static long points_inside(const sc_plot *p, const layout *l, const plot_axis *x,
-                          const plot_axis *y, double bx, double by, double bw, double bh)
+static long points_inside(const sc_plot *p, const layout *l, const plot_axis *x, const plot_axis *y,
+                          double bx, double by, double bw, double bh)
 {
     long n = 0;
     for (int s = 0; s < p->n_series; s++)
@@ -332,8 +348,9 @@ static void place_below(layout *l, int entries)
         usable = l->entry_width;
     }
     l->legend_columns = (int)(usable / l->entry_width);
-    l->legend_columns = l->legend_columns < 1 ? 1 : l->legend_columns > entries ? entries
-                                                                               : l->legend_columns;
+    l->legend_columns = l->legend_columns < 1         ? 1
+                        : l->legend_columns > entries ? entries
+                                                      : l->legend_columns;
     int rows = (entries + l->legend_columns - 1) / l->legend_columns;
     l->lw = l->legend_columns * l->entry_width;
     l->lh = rows * LEGEND_ROW + 8.0;
@@ -363,8 +380,9 @@ static void place_legend(const sc_plot *p, layout *l, const plot_axis *x, const 
 
 static void write_legend(FILE *out, const sc_plot *p, const layout *l)
 {
-    fprintf(out, "<g class=\"legend\">\n<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" "
-                 "fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n",
+    fprintf(out,
+            "<g class=\"legend\">\n<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" "
+            "fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n",
             l->lx, l->ly, l->lw, l->lh);
     int k = 0;
     for (int s = 0; s < p->n_series; s++) {
@@ -372,8 +390,9 @@ static void write_legend(FILE *out, const sc_plot *p, const layout *l)
             continue;
         double x = l->lx + 6.0 + (k % l->legend_columns) * l->entry_width;
         double y = l->ly + 4.0 + LEGEND_ROW / 2.0 + (k / l->legend_columns) * LEGEND_ROW;
-        fprintf(out, "<g stroke=\"%s\" fill=\"white\" stroke-width=\"1.6\"><line x1=\"%.2f\" "
-                     "y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke-dasharray=\"%s\"/>\n",
+        fprintf(out,
+                "<g stroke=\"%s\" fill=\"white\" stroke-width=\"1.6\"><line x1=\"%.2f\" "
+                "y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke-dasharray=\"%s\"/>\n",
                 plot_colour(s), x, y, x + LEGEND_SAMPLE, y, plot_dashes(s));
         plot_marker(out, s, x + LEGEND_SAMPLE / 2.0, y);
         fprintf(out, "</g>\n<text x=\"%.2f\" y=\"%.2f\" fill=\"#222\">", x + LEGEND_SAMPLE + 6.0,
@@ -442,8 +461,9 @@ static void write_clip(FILE *out, const sc_plot *p, const layout *l)
 {
     fputs("<defs><clipPath id=\"plot-area\">", out);
     if (p->polar) /* the half disc, a little enlarged for the line width */
-        fprintf(out, "<path d=\"M %.2f %.2f A %.2f %.2f 0 0 1 %.2f %.2f Z\"/>", l->cx - l->radius - 2,
-                l->cy + 1, l->radius + 2, l->radius + 2, l->cx + l->radius + 2, l->cy + 1);
+        fprintf(out, "<path d=\"M %.2f %.2f A %.2f %.2f 0 0 1 %.2f %.2f Z\"/>",
+                l->cx - l->radius - 2, l->cy + 1, l->radius + 2, l->radius + 2,
+                l->cx + l->radius + 2, l->cy + 1);
     else
         fprintf(out, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"/>", l->f.left,
                 l->f.top, l->f.width, l->f.height);

@@ -13,8 +13,7 @@ static double dot3(const double a[3], const double b[3])
 
 static void cross3(const double a[3], const double b[3], double out[3])
 {
-    double r[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                   a[0] * b[1] - a[1] * b[0]};
+    double r[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     out[0] = r[0], out[1] = r[1], out[2] = r[2];
 }
 
@@ -27,10 +26,7 @@ static double normalize3(double v[3])
     return len;
 }
 
-static int finite3(const double v[3])
-{
-    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
-}
+static int finite3(const double v[3]) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
 
 int sc_camera_validate(const sc_camera *c, char *err, size_t errsize)
 {
@@ -102,8 +98,7 @@ static double bounding_sphere(const sc_mesh *m, double centre[3])
     return r2 > 0.0 ? sqrt(r2) : 1.0;
 }
 
-void sc_camera_fit(sc_camera *c, const sc_mesh *m, const double direction[3], int width,
-                   int height)
+void sc_camera_fit(sc_camera *c, const sc_mesh *m, const double direction[3], int width, int height)
 {
     double centre[3], dir[3] = {direction[0], direction[1], direction[2]};
     double radius = bounding_sphere(m, centre);

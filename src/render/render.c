@@ -17,7 +17,7 @@ typedef struct {
     sc_framebuffer *fb;
     render_view view;
     render_shader shader; /* the scene, precision, and the batch kernel's plan if it fits */
-    raster_tri *tris; /* set-up screen triangles, in mesh order */
+    raster_tri *tris;     /* set-up screen triangles, in mesh order */
     int n_tris;
     unsigned char *front; /* per mesh triangle: 1 if its counter-clockwise side faces the eye */
     double *face_n;       /* per mesh triangle: unit geometric normal, counter-clockwise side */
@@ -372,7 +372,8 @@ static int run_tiles(render_job *job)
         return -1;
     for (int i = 0; i < n; i++)
         args[i] = (worker_arg){job, &bufs[i]};
-    while (started + 1 < n && pthread_create(&threads[started], NULL, worker, &args[started + 1]) == 0)
+    while (started + 1 < n &&
+           pthread_create(&threads[started], NULL, worker, &args[started + 1]) == 0)
         started++;
     worker(&args[0]);
     for (int i = 0; i < started; i++)

@@ -22,7 +22,7 @@ static void shade_chunk(const sc_batch_plan *plan, const double eye[3], int n,
             soa[6 + c][i] = (float)in[i].pos[c];
         }
     const float *const in_arrays[9] = {soa[0], soa[1], soa[2], soa[3], soa[4],
-                                        soa[5], soa[6], soa[7], soa[8]};
+                                       soa[5], soa[6], soa[7], soa[8]};
     float *const out_arrays[3] = {out[0], out[1], out[2]};
     sc_batch_plan_shade(plan, in_arrays, out_arrays, (size_t)n);
     for (int i = 0; i < n; i++)
@@ -60,8 +60,7 @@ int render_shader_init(render_shader *sh, const sc_scene *scene, sc_prec prec, c
     sh->prec = prec;
     sh->plan = NULL;
     if (prec != SC_HIGHP)
-        return snprintf(why, size, "%s: the shading kernel computes highp", sc_prec_name(prec)),
-               0;
+        return snprintf(why, size, "%s: the shading kernel computes highp", sc_prec_name(prec)), 0;
     sh->plan = sc_batch_plan_compile(scene, tier ? tier : "accurate", sc_isa_active(), why, size);
     return sh->plan != NULL;
 }

@@ -193,10 +193,10 @@ static const key_def *find_key(const key_def *keys, const char *key)
 static const struct {
     const char *alias, *key;
 } synonyms[] = {
-    {"shininess", "m"}, {"exponent", "m"},   {"exponent", "exp"},     {"roughness", "alpha"},
-    {"intensity", "I"}, {"position", "pos"}, {"direction", "dir"},    {"attenuation", "atten"},
-    {"color", "diff"},  {"colour", "diff"},  {"ambient", "amb"},      {"specular", "spec"},
-    {"diffuse", "diff"}, {"falloff", "exp"}, {"fresnel", "F"},        {"ndf", "D"},
+    {"shininess", "m"},  {"exponent", "m"},   {"exponent", "exp"},  {"roughness", "alpha"},
+    {"intensity", "I"},  {"position", "pos"}, {"direction", "dir"}, {"attenuation", "atten"},
+    {"color", "diff"},   {"colour", "diff"},  {"ambient", "amb"},   {"specular", "spec"},
+    {"diffuse", "diff"}, {"falloff", "exp"},  {"fresnel", "F"},     {"ndf", "D"},
 };
 
 /* The key of `keys` (one that `kind` accepts) closest to the unknown `key`, by name or by a
@@ -282,8 +282,8 @@ static int log_write(write_log *log, size_t offset, const char *key, const char 
 /* A key that has an effect only for some values of another (sc= only with atten=clq). */
 typedef struct {
     const char *key;
-    size_t selector;      /* offset of the int field that decides */
-    unsigned values;      /* bit v: the key has an effect when that field is v */
+    size_t selector; /* offset of the int field that decides */
+    unsigned values; /* bit v: the key has an effect when that field is v */
     const char *selector_key;
     const char *const *names; /* the selector's values, index = value */
 } key_need;
@@ -312,8 +312,8 @@ static int ignored_keys(const write_log *log, const key_need *needs, size_t n_ne
 /* ---- lights ---- */
 
 static const char *const light_kinds[] = {"directional", "point", "spot", NULL};
-static const char *const atten_names[] = {"none",  "inverse-square", "clq",
-                                          "window", "pixar",         "windowed", NULL};
+static const char *const atten_names[] = {"none",  "inverse-square", "clq", "window",
+                                          "pixar", "windowed",       NULL};
 static const char *const spot_names[] = {"opengl", "directx", "smoothstep", NULL};
 
 #define L(field) offsetof(sc_light, field)
@@ -351,9 +351,15 @@ static const key_def light_keys[] = {
 /* clang-format on */
 
 static const char *const flag_names[] = {"0", "1", NULL};
-enum { CLQ = 1u << SC_ATTEN_CLQ, WIN = 1u << SC_ATTEN_WINDOW, PIX = 1u << SC_ATTEN_PIXAR,
-       WDW = 1u << SC_ATTEN_WINDOWED, GL = 1u << SC_SPOT_OPENGL, DX = 1u << SC_SPOT_DIRECTX,
-       SMOOTH = 1u << SC_SPOT_SMOOTHSTEP };
+enum {
+    CLQ = 1u << SC_ATTEN_CLQ,
+    WIN = 1u << SC_ATTEN_WINDOW,
+    PIX = 1u << SC_ATTEN_PIXAR,
+    WDW = 1u << SC_ATTEN_WINDOWED,
+    GL = 1u << SC_SPOT_OPENGL,
+    DX = 1u << SC_SPOT_DIRECTX,
+    SMOOTH = 1u << SC_SPOT_SMOOTHSTEP
+};
 static const key_need light_needs[] = {
     {"sc", L(atten.kind), CLQ, "atten", atten_names},
     {"sl", L(atten.kind), CLQ, "atten", atten_names},
@@ -395,8 +401,7 @@ static int apply_light_item(void *vctx, const item *it)
         store(k, c->light, it->value, c->what, c->err, c->size) < 0)
         return -1;
     if (k->kind == V_COLOUR && is_negative((const double *)((char *)c->light + k->offset)))
-        return fail(c->err, c->size, "%s: %s=%s: must not be negative", c->what, k->key,
-                    it->value);
+        return fail(c->err, c->size, "%s: %s=%s: must not be negative", c->what, k->key, it->value);
     c->seen_pos |= k->offset == L(pos);
     c->seen_dir |= k->offset == L(dir);
     if (strcmp(k->key, "theta") == 0) /* Direct3D 9 full cone angles: halved */
@@ -433,10 +438,9 @@ int sc_light_parse(const char *spec, sc_light *out, char *err, size_t size)
 
 /* ---- models ---- */
 
-static const char *const model_kinds[] = {"lambert",       "phong",      "blinn-phong",
-                                          "ward",          "oren-nayar", "cook-torrance",
-                                          "ads",           "opengl",     "direct3d9",
-                                          NULL};
+static const char *const model_kinds[] = {
+    "lambert",       "phong", "blinn-phong", "ward",      "oren-nayar",
+    "cook-torrance", "ads",   "opengl",      "direct3d9", NULL};
 static const char *const ndf_names[] = {"beckmann", "ggx", NULL};
 static const char *const g_names[] = {"cook-torrance", "smith", "smith-correlated", NULL};
 static const char *const f_names[] = {"schlick", "exact", "none", NULL};

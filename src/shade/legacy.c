@@ -42,8 +42,8 @@ static double ads_specular_base(sc_prec p, sc_ads_form form, const sc_shade_poin
     return fmax(sc_p_dot(p, at->frame.n, x, 3), 0.0);
 }
 
-static void ads_light(sc_prec p, const sc_scene *s, const sc_light *light,
-                      const sc_shade_point *at, sc_light_terms *t)
+static void ads_light(sc_prec p, const sc_scene *s, const sc_light *light, const sc_shade_point *at,
+                      sc_light_terms *t)
 {
     const sc_brdf *mat = &s->model.brdf;
     sc_light_eval(p, light, at->pos, at->frame.n, &t->light);
@@ -52,7 +52,8 @@ static void ads_light(sc_prec p, const sc_scene *s, const sc_light *light,
     t->brdf.cos_i = cos_i;
     double lobe = 0.0;
     if (s->model.ads_form != SC_ADS_LAMBERT)
-        lobe = sc_lobe_pow(p, ads_specular_base(p, s->model.ads_form, at, t->light.l, cos_i), mat->m);
+        lobe = sc_lobe_pow(p, ads_specular_base(p, s->model.ads_form, at, t->light.l, cos_i),
+                           mat->m);
     light_colour(p, light, light->diffuse, cd);
     light_colour(p, light, light->specular, cs);
     sc_mul3(p, cd, mat->diff, t->brdf.diffuse);
@@ -89,7 +90,8 @@ static void fixed_function_light(sc_prec p, const sc_model *m, const sc_light *l
 {
     sc_light_eval(p, light, at->pos, at->frame.n, &t->light);
     double scale = sc_mul_reach(p, t->light.f_d, t->light.spot);
-    if (m->kind == SC_MODEL_D3D9 && light->kind != SC_LIGHT_DIRECTIONAL && t->light.r > light->range)
+    if (m->kind == SC_MODEL_D3D9 && light->kind != SC_LIGHT_DIRECTIONAL &&
+        t->light.r > light->range)
         scale = 0.0;
     const double *l = t->light.l, *n = at->frame.n;
     double cos_i = sc_p_dot(p, n, l, 3), h[3], colour[3];

@@ -48,8 +48,7 @@ static void brdf_light(sc_prec p, const sc_scene *s, const sc_light *light,
         t->contribution[c] = sc_p_add(p, t->ambient[c], sc_mul_reach(p, fe[c], cos_i));
 }
 
-static void shade_brdf(sc_prec p, const sc_scene *s, const sc_shade_point *at,
-                       sc_shade_result *out)
+static void shade_brdf(sc_prec p, const sc_scene *s, const sc_shade_point *at, sc_shade_result *out)
 {
     sc_mul3(p, s->model.brdf.amb, s->ambient, out->ambient);
     memcpy(out->L, out->ambient, sizeof out->L);

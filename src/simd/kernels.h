@@ -11,6 +11,7 @@
 #endif
 
 /* kernel_tier names, each defined once per instruction set */
+/* clang-format off */
 #define SC_BATCH_KERNELS(X)                                                                       \
     X(exp2_u1) X(exp2_u4) X(exp2_bits12) X(exp2_bits8) X(exp_u1) X(exp_u4) X(exp_bits12)         \
     X(exp_bits8) X(log2_u1) X(log2_u4) X(log2_bits12) X(log2_bits8) X(log_u1) X(log_u4)          \
@@ -23,6 +24,7 @@
 #define SC_DECLARE_SSE41(name) void sc_batch_##name##_sse41(const sc_batch_args *a);
 #define SC_DECLARE_AVX2(name) void sc_batch_##name##_avx2(const sc_batch_args *a);
 #define SC_BATCH_ALL_KERNELS(X) SC_BATCH_KERNELS(X) SC_BATCH_KERNELS_TRIG(X) SC_BATCH_KERNELS_LIGHT(X)
+/* clang-format on */
 SC_BATCH_ALL_KERNELS(SC_DECLARE_SCALAR)
 #ifdef SC_HAVE_X86
 SC_BATCH_ALL_KERNELS(SC_DECLARE_SSE41)

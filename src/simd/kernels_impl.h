@@ -115,11 +115,11 @@ static SC_INLINE void run2(const sc_batch_args *a, lane2_fn f)
                       a->n - i);
 }
 
-#define BATCH1(name, lane)                                                                        \
-    void K(name)(const sc_batch_args *a);                                                         \
+#define BATCH1(name, lane)                                                                         \
+    void K(name)(const sc_batch_args *a);                                                          \
     void K(name)(const sc_batch_args *a) { run1(a, lane); }
-#define BATCH2(name, lane)                                                                        \
-    void K(name)(const sc_batch_args *a);                                                         \
+#define BATCH2(name, lane)                                                                         \
+    void K(name)(const sc_batch_args *a);                                                          \
     void K(name)(const sc_batch_args *a) { run2(a, lane); }
 
 /* Lanes where `special` holds get the scalar built-in's result (rare inputs only). */
@@ -173,8 +173,8 @@ static SC_INLINE vf poly(vf x, const float *c, int n)
 
 /* 2^f on [−1/2, 1/2]: degree 2 (fit error 1.9e-3), 3 (8.1e-5), 5 (7.9e-8). */
 static const float exp2_c2[3] = {0.242035330190541f, 0.7036011773937813f, 1.0f};
-static const float exp2_c3[4] = {0.055838282946219855f, 0.24263947854625853f,
-                                 0.6931367338836215f, 0.9999245569508708f};
+static const float exp2_c3[4] = {0.055838282946219855f, 0.24263947854625853f, 0.6931367338836215f,
+                                 0.9999245569508708f};
 static const float exp2_c5[6] = {0.0013390863364671234f, 0.009676031918322054f,
                                  0.05550357114219078f,   0.2402210748530834f,
                                  0.6931471880262288f,    1.0000000754548972f};
@@ -198,15 +198,13 @@ static inline vf exp2_fast(vf x, const float *c, int n)
 }
 
 /* log2(1+t)/t on [√½ − 1, √2 − 1]: degree 3 (fit error 6.0e-4), 4 (8.9e-5), 8 (5.0e-8). */
-static const float log2_c3[4] = {-0.32262359078704306f, 0.5101832372272362f,
-                                 -0.7246998473568208f, 1.4423070538781517f};
-static const float log2_c4[5] = {0.25028784696095874f, -0.38967522379177433f,
-                                 0.48573784244262974f, -0.7206292158599162f, 1.442640464283215f};
-static const float log2_c8[9] = {0.1231096846719146f,  -0.20586188051276055f,
-                                 0.21607822552243777f, -0.2391698814010418f,
-                                 0.28790326092450147f, -0.36069326813533614f,
-                                 0.48091075345941253f, -0.7213474682495624f,
-                                 1.4426950035679822f};
+static const float log2_c3[4] = {-0.32262359078704306f, 0.5101832372272362f, -0.7246998473568208f,
+                                 1.4423070538781517f};
+static const float log2_c4[5] = {0.25028784696095874f, -0.38967522379177433f, 0.48573784244262974f,
+                                 -0.7206292158599162f, 1.442640464283215f};
+static const float log2_c8[9] = {0.1231096846719146f,  -0.20586188051276055f, 0.21607822552243777f,
+                                 -0.2391698814010418f, 0.28790326092450147f,  -0.36069326813533614f,
+                                 0.48091075345941253f, -0.7213474682495624f,  1.4426950035679822f};
 
 /* x = m · 2^e with m in [√½, √2), for positive normal x, by integer arithmetic on the float
  * bits (musl logf's offset trick): both m and e exact in float. */

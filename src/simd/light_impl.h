@@ -44,19 +44,19 @@ static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_
     run_n(&b, k, m, lane);
 }
 
-#define FUNC_KERNEL(name, tier, f, setup)                                                         \
-    static SC_INLINE void name##_lane(const float *const *in, float *const *out, size_t i,       \
-                                      const sc_batch_scene *s, const void *u)                     \
-    {                                                                                             \
-        (void)s;                                                                                  \
-        func_lane(tier, f, in, out, i, u);                                                        \
-    }                                                                                             \
-    void K(name)(const sc_batch_args *a);                                                         \
-    void K(name)(const sc_batch_args *a)                                                          \
-    {                                                                                             \
-        func_uniforms u;                                                                          \
-        setup(a->params, &u);                                                                     \
-        run_uniforms(a, 1, 1, name##_lane, &u);                                                   \
+#define FUNC_KERNEL(name, tier, f, setup)                                                          \
+    static SC_INLINE void name##_lane(const float *const *in, float *const *out, size_t i,         \
+                                      const sc_batch_scene *s, const void *u)                      \
+    {                                                                                              \
+        (void)s;                                                                                   \
+        func_lane(tier, f, in, out, i, u);                                                         \
+    }                                                                                              \
+    void K(name)(const sc_batch_args *a);                                                          \
+    void K(name)(const sc_batch_args *a)                                                           \
+    {                                                                                              \
+        func_uniforms u;                                                                           \
+        setup(a->params, &u);                                                                      \
+        run_uniforms(a, 1, 1, name##_lane, &u);                                                    \
     }
 
 /* -- attenuation (docs/formulas.md §3; light.c): denominators at least 1e-4, so r = 0 is finite -- */
@@ -79,8 +79,8 @@ static inline void atten_setup_pixar(const void *params, func_uniforms *u)
 {
     const sc_batch_atten_params *p = params;
     double k0 = log((double)p->f_c / p->f_max);
-    *u = (func_uniforms){{p->f_c, p->r_c, p->s_e, p->f_max, (float)k0,
-                          k0 == 0.0 ? 0.0f : (float)(-p->s_e / k0)}};
+    *u = (func_uniforms){
+        {p->f_c, p->r_c, p->s_e, p->f_max, (float)k0, k0 == 0.0 ? 0.0f : (float)(-p->s_e / k0)}};
 }
 
 /* k: r_max, r_max², 1/r_max^4 */
@@ -117,7 +117,8 @@ static SC_INLINE vf atten_invsq(int tier, vf r, const func_uniforms *u)
 static SC_INLINE vf atten_clq(int tier, vf r, const func_uniforms *u)
 {
     (void)tier;
-    vf d = vf_add(vf_fma(vf_set1(u->k[1]), r, vf_set1(u->k[0])), vf_mul(vf_set1(u->k[2]), vf_mul(r, r)));
+    vf d = vf_add(vf_fma(vf_set1(u->k[1]), r, vf_set1(u->k[0])),
+                  vf_mul(vf_set1(u->k[2]), vf_mul(r, r)));
     return vf_div(vf_set1(1.0f), vf_max(d, vf_set1(1e-4f)));
 }
 
@@ -201,7 +202,8 @@ typedef struct {
 
 static SC_INLINE v3 v3_cross(v3 a, v3 b)
 {
-    return (v3){vf_sub(vf_mul(a.y, b.z), vf_mul(a.z, b.y)), vf_sub(vf_mul(a.z, b.x), vf_mul(a.x, b.z)),
+    return (v3){vf_sub(vf_mul(a.y, b.z), vf_mul(a.z, b.y)),
+                vf_sub(vf_mul(a.z, b.x), vf_mul(a.x, b.z)),
                 vf_sub(vf_mul(a.x, b.y), vf_mul(a.y, b.x))};
 }
 
@@ -234,7 +236,8 @@ static SC_INLINE vf inv_pi_v(void) { return vf_set1(inv_pi_f); }
 /* cos θ_i, floored as brdf.c's divisions (inactive in the stated domain) */
 static SC_INLINE vf cos_floor(vf c) { return vf_max(c, vf_set1(1e-6f)); }
 
-static SC_INLINE brdf_weights model_lambert(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+static SC_INLINE brdf_weights model_lambert(int tier, const brdf_uniforms *u,
+                                            const brdf_geometry *g)
 {
     (void)tier, (void)u, (void)g;
     return weights(inv_pi_v(), vf_set1(0.0f), vf_set1(0.0f));
@@ -263,7 +266,8 @@ static SC_INLINE brdf_weights model_phong(int tier, const brdf_uniforms *u, cons
 
 /* Blinn-Phong: (n·h)^m = (1 − |n × h_u|²/(h_u·h_u))^(m/2) times k0 = (m+8)/(8π) (normalized,
  * RTR3 §7.6) or 1 (plain); cos²θ_h from sin²θ_h stays accurate at the peak. */
-static SC_INLINE brdf_weights model_blinn_phong(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+static SC_INLINE brdf_weights model_blinn_phong(int tier, const brdf_uniforms *u,
+                                                const brdf_geometry *g)
 {
     vf sin2 = vf_mul(g->s2, tier_rcp(tier, vf_max(g->hh, vf_set1(FLT_MIN))));
     vf lobe = cos_lobe(tier, vf_sub(vf_set1(1.0f), sin2), 0.5f * u->m);
@@ -291,7 +295,8 @@ static SC_INLINE brdf_weights model_ward(int tier, const brdf_uniforms *u, const
     } else {
         den = tier_sqrt(tier, vf_mul(ci, co));
     }
-    return weights(inv_pi_v(), vf_mul(vf_mul(e, vf_set1(u->k[0])), tier_rcp(tier, den)), vf_set1(0.0f));
+    return weights(inv_pi_v(), vf_mul(vf_mul(e, vf_set1(u->k[0])), tier_rcp(tier, den)),
+                   vf_set1(0.0f));
 }
 
 /* asin x for 0 <= x <= 1/2: x + x R(x²), musl asinf's rational R (error < 1 ULP in float) */
@@ -317,21 +322,26 @@ static SC_INLINE vf angle_of(int tier, vf c, vf s)
 /* Oren–Nayar (docs/formulas.md §6.5): α = max(θ_i, θ_o), β = min; cos Δφ = (n × l)·(n × v) /
  * (|n × l| |n × v|), 0 where either is below 1e-12; tan((α+β)/2) = (sin α + sin β)/(cos α +
  * cos β). k0 = A (= C1), k1 = B, k2 = 0.125 σ²/(σ²+0.09), k3 = 0.17/π σ²/(σ²+0.13). */
-static SC_INLINE brdf_weights model_oren_nayar(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+static SC_INLINE brdf_weights model_oren_nayar(int tier, const brdf_uniforms *u,
+                                               const brdf_geometry *g)
 {
     v3 nxl = v3_cross(g->n, g->l), nxv = v3_cross(g->n, g->v);
     vf ll = v3_dot(nxl, nxl), vv = v3_dot(nxv, nxv);
     vm tangent = vm_and(vf_lt(vf_set1(1e-24f), ll), vf_lt(vf_set1(1e-24f), vv));
-    vf inv = vf_mul(tier_rsqrt(tier, vf_max(ll, vf_set1(1e-24f))), tier_rsqrt(tier, vf_max(vv, vf_set1(1e-24f))));
-    vf cdp = vf_select(tangent, vf_clamp(vf_mul(v3_dot(nxl, nxv), inv), -1.0f, 1.0f), vf_set1(0.0f));
+    vf inv = vf_mul(tier_rsqrt(tier, vf_max(ll, vf_set1(1e-24f))),
+                    tier_rsqrt(tier, vf_max(vv, vf_set1(1e-24f))));
+    vf cdp = vf_select(tangent, vf_clamp(vf_mul(v3_dot(nxl, nxv), inv), -1.0f, 1.0f),
+                       vf_set1(0.0f));
     vf sin_a = tier_sqrt(tier, vf_max(vf_max(ll, vv), vf_set1(FLT_MIN)));
     vf sin_b = tier_sqrt(tier, vf_max(vf_min(ll, vv), vf_set1(FLT_MIN)));
     vf cos_a = vf_min(g->nl, g->nv), cos_b = vf_max(g->nl, g->nv);
     vf tan_b = vf_mul(sin_b, tier_rcp(tier, cos_b));
     vf A = vf_set1(u->k[0]), B = vf_set1(u->k[1]);
     if (u->form != SC_OREN_FULL) /* A + B max(0, cos Δφ) sin α tan β */
-        return weights(vf_mul(vf_fma(B, vf_mul(vf_max(cdp, vf_set1(0.0f)), vf_mul(sin_a, tan_b)), A), inv_pi_v()),
-                       vf_set1(0.0f), vf_set1(0.0f));
+        return weights(
+            vf_mul(vf_fma(B, vf_mul(vf_max(cdp, vf_set1(0.0f)), vf_mul(sin_a, tan_b)), A),
+                   inv_pi_v()),
+            vf_set1(0.0f), vf_set1(0.0f));
     vf alpha = angle_of(tier, cos_a, sin_a), beta = angle_of(tier, cos_b, sin_b);
     vf tb = vf_mul(beta, vf_set1(2.0f / pi_f)), tb2 = vf_mul(tb, tb); /* 2β/π */
     vf sin_term = vf_select(vf_lt(cdp, vf_set1(0.0f)), vf_sub(sin_a, vf_mul(tb2, tb)), sin_a);
@@ -355,7 +365,8 @@ static const float erfc_c[10] = {0.17087277f, -0.82215223f, 1.48851587f, -1.1352
 
 static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c)
 {
-    vf s = tier_sqrt(tier, vf_max(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)), vf_set1(FLT_MIN)));
+    vf s = tier_sqrt(
+        tier, vf_max(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)), vf_set1(FLT_MIN)));
     vf a = vf_mul(c, tier_rcp(tier, vf_mul(vf_set1(u->k[0]), s))); /* k0 = α */
     vf t = tier_rcp(tier, vf_fma(vf_set1(0.5f), a, vf_set1(1.0f)));
     vf erfc_scaled = vf_mul(t, light_exp(tier, poly(t, erfc_c, 10)));
@@ -409,7 +420,8 @@ static SC_INLINE vf visibility(int tier, const brdf_uniforms *u, const brdf_geom
 static SC_INLINE vf fresnel_exact(int tier, const brdf_uniforms *u, vf c)
 {
     vf eta = vf_set1(u->k[1]);
-    vf sin2_t = vf_mul(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)), vf_set1(u->k[2]));
+    vf sin2_t = vf_mul(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)),
+                       vf_set1(u->k[2]));
     vf cos_t = tier_sqrt(tier, vf_max(vf_sub(vf_set1(1.0f), sin2_t), vf_set1(FLT_MIN)));
     vf ec = vf_mul(eta, c), et = vf_mul(eta, cos_t);
     vf r_par = vf_mul(vf_sub(ec, cos_t), tier_rcp(tier, vf_add(ec, cos_t)));
@@ -421,10 +433,12 @@ static SC_INLINE vf fresnel_exact(int tier, const brdf_uniforms *u, vf c)
 /* Cook–Torrance (docs/formulas.md §6.6): S = D V (× 4 for the 1982 form, k3); Schlick F =
  * F0 + (1 − F0)(1 − v·h)^5 splits as S·(c_spec F0) + S (1 − v·h)^5·(c_spec (1 − F0)); with
  * v·h = |h_u|/2 for unit l, v. */
-static SC_INLINE brdf_weights model_cook_torrance(int tier, const brdf_uniforms *u, const brdf_geometry *g)
+static SC_INLINE brdf_weights model_cook_torrance(int tier, const brdf_uniforms *u,
+                                                  const brdf_geometry *g)
 {
     vf S = vf_mul(vf_mul(ndf(tier, u, g), visibility(tier, u, g)), vf_set1(u->k[3]));
-    vf vh = vf_clamp(vf_mul(vf_set1(0.5f), tier_sqrt(tier, vf_max(g->hh, vf_set1(FLT_MIN)))), 0.0f, 1.0f);
+    vf vh = vf_clamp(vf_mul(vf_set1(0.5f), tier_sqrt(tier, vf_max(g->hh, vf_set1(FLT_MIN)))), 0.0f,
+                     1.0f);
     if (u->F == SC_F_SCHLICK) {
         vf c = vf_sub(vf_set1(1.0f), vh), c2 = vf_mul(c, c);
         return weights(inv_pi_v(), S, vf_mul(S, vf_mul(vf_mul(c2, c2), c)));
@@ -438,12 +452,17 @@ static SC_INLINE brdf_weights model_cook_torrance(int tier, const brdf_uniforms 
 static inline void brdf_setup(sc_brdf_kind kind, const sc_batch_brdf_params *p, brdf_uniforms *u)
 {
     float alpha = p->alpha > 1e-4f ? p->alpha : 1e-4f, s2 = p->sigma * p->sigma;
-    *u = (brdf_uniforms){.m = p->m, .a2 = alpha * alpha, .form = p->form, .cos = p->cos,
-                         .D = p->D, .G = p->G, .F = p->F};
+    *u = (brdf_uniforms){.m = p->m,
+                         .a2 = alpha * alpha,
+                         .form = p->form,
+                         .cos = p->cos,
+                         .D = p->D,
+                         .G = p->G,
+                         .F = p->F};
     for (int c = 0; c < 3; c++) {
         u->col[0][c] = p->diff[c];
         u->col[1][c] = kind == SC_BRDF_COOK_TORRANCE && p->F == SC_F_SCHLICK ? p->spec[c] * p->f0[c]
-                                                                            : p->spec[c];
+                                                                             : p->spec[c];
         u->col[2][c] = kind == SC_BRDF_OREN_NAYAR ? p->diff[c] * p->diff[c]
                                                   : p->spec[c] * (1.0f - p->f0[c]);
     }
@@ -454,7 +473,9 @@ static inline void brdf_setup(sc_brdf_kind kind, const sc_batch_brdf_params *p, 
     case SC_BRDF_BLINN_PHONG:
         u->k[0] = p->form == SC_BLINN_PLAIN ? 1.0f : (p->m + 8.0f) / (8.0f * pi_f);
         break;
-    case SC_BRDF_WARD: u->k[0] = 1.0f / ((p->form == SC_WARD_GMD ? 1.0f : 4.0f) * pi_f * u->a2); break;
+    case SC_BRDF_WARD:
+        u->k[0] = 1.0f / ((p->form == SC_WARD_GMD ? 1.0f : 4.0f) * pi_f * u->a2);
+        break;
     case SC_BRDF_OREN_NAYAR:
         u->k[0] = 1.0f - 0.5f * s2 / (s2 + 0.33f);
         u->k[1] = 0.45f * s2 / (s2 + 0.09f);
@@ -490,32 +511,32 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
     }
 }
 
-#define BRDF_LANE(model, tier)                                                                    \
-    static SC_INLINE void brdf_##model##_##tier(const float *const *in, float *const *out,       \
-                                                size_t i, const sc_batch_scene *s, const void *u) \
-    {                                                                                             \
-        (void)s;                                                                                  \
-        brdf_lane(tier, model_##model, in, out, i, u);                                            \
+#define BRDF_LANE(model, tier)                                                                     \
+    static SC_INLINE void brdf_##model##_##tier(const float *const *in, float *const *out,         \
+                                                size_t i, const sc_batch_scene *s, const void *u)  \
+    {                                                                                              \
+        (void)s;                                                                                   \
+        brdf_lane(tier, model_##model, in, out, i, u);                                             \
     }
 /* One loop per model, chosen once per call (params.model), so that each is straight-line. */
-#define BRDF_KERNEL(name, tier)                                                                   \
-    BRDF_LANE(lambert, tier)                                                                      \
-    BRDF_LANE(phong, tier)                                                                        \
-    BRDF_LANE(blinn_phong, tier)                                                                  \
-    BRDF_LANE(ward, tier)                                                                         \
-    BRDF_LANE(oren_nayar, tier)                                                                   \
-    BRDF_LANE(cook_torrance, tier)                                                                \
-    void K(name)(const sc_batch_args *a);                                                         \
-    void K(name)(const sc_batch_args *a)                                                          \
-    {                                                                                             \
-        static const lane_n_fn lanes[] = {brdf_lambert_##tier,    brdf_phong_##tier,              \
-                                          brdf_blinn_phong_##tier, brdf_ward_##tier,              \
-                                          brdf_oren_nayar_##tier, brdf_cook_torrance_##tier};     \
-        const sc_batch_brdf_params *p = a->params;                                                \
-        int model = p->model >= 0 && p->model <= SC_BRDF_COOK_TORRANCE ? p->model : 0;           \
-        brdf_uniforms u;                                                                          \
-        brdf_setup((sc_brdf_kind)model, p, &u);                                                   \
-        run_uniforms(a, 9, 3, lanes[model], &u);                                                  \
+#define BRDF_KERNEL(name, tier)                                                                    \
+    BRDF_LANE(lambert, tier)                                                                       \
+    BRDF_LANE(phong, tier)                                                                         \
+    BRDF_LANE(blinn_phong, tier)                                                                   \
+    BRDF_LANE(ward, tier)                                                                          \
+    BRDF_LANE(oren_nayar, tier)                                                                    \
+    BRDF_LANE(cook_torrance, tier)                                                                 \
+    void K(name)(const sc_batch_args *a);                                                          \
+    void K(name)(const sc_batch_args *a)                                                           \
+    {                                                                                              \
+        static const lane_n_fn lanes[] = {brdf_lambert_##tier,     brdf_phong_##tier,              \
+                                          brdf_blinn_phong_##tier, brdf_ward_##tier,               \
+                                          brdf_oren_nayar_##tier,  brdf_cook_torrance_##tier};     \
+        const sc_batch_brdf_params *p = a->params;                                                 \
+        int model = p->model >= 0 && p->model <= SC_BRDF_COOK_TORRANCE ? p->model : 0;             \
+        brdf_uniforms u;                                                                           \
+        brdf_setup((sc_brdf_kind)model, p, &u);                                                    \
+        run_uniforms(a, 9, 3, lanes[model], &u);                                                   \
     }
 BRDF_KERNEL(brdf_bits16, ACCURATE)
 BRDF_KERNEL(brdf_bits12, FAST12)

@@ -48,8 +48,8 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
         store_partial(a->out[j] + i, vf_loadu(tail_out[j]), a->n - i);
 }
 
-#define BATCH_N(name, k, m, lane)                                                                 \
-    void K(name)(const sc_batch_args *a);                                                         \
+#define BATCH_N(name, k, m, lane)                                                                  \
+    void K(name)(const sc_batch_args *a);                                                          \
     void K(name)(const sc_batch_args *a) { run_n(a, k, m, lane); }
 
 /* ---- the operations tiers choose ---- */
@@ -155,11 +155,26 @@ static SC_INLINE void v3_store(v3 a, float *const *out, size_t i)
     vf_storeu(out[1] + i, a.y);
     vf_storeu(out[2] + i, a.z);
 }
-static SC_INLINE vf v3_dot(v3 a, v3 b) { return vf_fma(a.x, b.x, vf_fma(a.y, b.y, vf_mul(a.z, b.z))); }
-static SC_INLINE v3 v3_scale(v3 a, vf s) { return (v3){vf_mul(a.x, s), vf_mul(a.y, s), vf_mul(a.z, s)}; }
-static SC_INLINE v3 v3_add(v3 a, v3 b) { return (v3){vf_add(a.x, b.x), vf_add(a.y, b.y), vf_add(a.z, b.z)}; }
-static SC_INLINE v3 v3_sub(v3 a, v3 b) { return (v3){vf_sub(a.x, b.x), vf_sub(a.y, b.y), vf_sub(a.z, b.z)}; }
-static SC_INLINE v3 v3_set1(const float *c) { return (v3){vf_set1(c[0]), vf_set1(c[1]), vf_set1(c[2])}; }
+static SC_INLINE vf v3_dot(v3 a, v3 b)
+{
+    return vf_fma(a.x, b.x, vf_fma(a.y, b.y, vf_mul(a.z, b.z)));
+}
+static SC_INLINE v3 v3_scale(v3 a, vf s)
+{
+    return (v3){vf_mul(a.x, s), vf_mul(a.y, s), vf_mul(a.z, s)};
+}
+static SC_INLINE v3 v3_add(v3 a, v3 b)
+{
+    return (v3){vf_add(a.x, b.x), vf_add(a.y, b.y), vf_add(a.z, b.z)};
+}
+static SC_INLINE v3 v3_sub(v3 a, v3 b)
+{
+    return (v3){vf_sub(a.x, b.x), vf_sub(a.y, b.y), vf_sub(a.z, b.z)};
+}
+static SC_INLINE v3 v3_set1(const float *c)
+{
+    return (v3){vf_set1(c[0]), vf_set1(c[1]), vf_set1(c[2])};
+}
 
 /* a / |a| given dd = a·a. The zero vector stays zero (dd is taken at least 2^-149); lanes
  * whose dd overflowed are scaled by 2^-100 first (rare: a branch, not a cost on every vector). */
@@ -206,12 +221,12 @@ static SC_INLINE void length_lane(const float *const *in, float *const *out, siz
     vf_storeu(out[0] + i, vf_sqrt(v3_dot(a, a)));
 }
 
-#define TIERED_LANE(name, body_fn, tier)                                                          \
-    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
-                               const sc_batch_scene *s, const void *p)                            \
-    {                                                                                             \
-        (void)s, (void)p;                                                                         \
-        body_fn(tier, in, out, i);                                                                \
+#define TIERED_LANE(name, body_fn, tier)                                                           \
+    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,                \
+                               const sc_batch_scene *s, const void *p)                             \
+    {                                                                                              \
+        (void)s, (void)p;                                                                          \
+        body_fn(tier, in, out, i);                                                                 \
     }
 
 static SC_INLINE void normalize_tier(int tier, const float *const *in, float *const *out, size_t i)
@@ -325,8 +340,7 @@ static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *cons
 }
 
 /* The arguments with, as params, the call's shade_uniforms. */
-static inline sc_batch_args with_shade_uniforms(const sc_batch_args *a, int tier,
-                                                shade_uniforms *u)
+static inline sc_batch_args with_shade_uniforms(const sc_batch_args *a, int tier, shade_uniforms *u)
 {
     const sc_batch_scene *s = a->scene;
     for (int k = 0; k < s->n_lights && k < SC_BATCH_MAX_LIGHTS; k++)
@@ -341,26 +355,26 @@ static inline sc_batch_args with_shade_uniforms(const sc_batch_args *a, int tier
     return b;
 }
 
-#define SHADE_LANE(name, tier, brdf)                                                              \
-    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,              \
-                               const sc_batch_scene *s, const void *u)                            \
-    {                                                                                             \
-        shade_tier(tier, brdf, in, out, i, s, u);                                                 \
+#define SHADE_LANE(name, tier, brdf)                                                               \
+    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,                \
+                               const sc_batch_scene *s, const void *u)                             \
+    {                                                                                              \
+        shade_tier(tier, brdf, in, out, i, s, u);                                                  \
     }
-#define SHADE_KERNEL(name, tier)                                                                  \
-    SHADE_LANE(name##_lambert, tier, SC_BATCH_LAMBERT)                                            \
-    SHADE_LANE(name##_blinn, tier, SC_BATCH_BLINN_PHONG)                                          \
-    SHADE_LANE(name##_ggx, tier, SC_BATCH_GGX)                                                    \
-    void K(name)(const sc_batch_args *a);                                                         \
-    void K(name)(const sc_batch_args *a)                                                          \
-    {                                                                                             \
-        shade_uniforms u;                                                                         \
-        sc_batch_args b = with_shade_uniforms(a, tier, &u);                                       \
-        switch (a->scene->brdf) {                                                                 \
-        case SC_BATCH_LAMBERT: run_n(&b, 9, 3, name##_lambert); break;                            \
-        case SC_BATCH_BLINN_PHONG: run_n(&b, 9, 3, name##_blinn); break;                          \
-        default: run_n(&b, 9, 3, name##_ggx); break;                                              \
-        }                                                                                         \
+#define SHADE_KERNEL(name, tier)                                                                   \
+    SHADE_LANE(name##_lambert, tier, SC_BATCH_LAMBERT)                                             \
+    SHADE_LANE(name##_blinn, tier, SC_BATCH_BLINN_PHONG)                                           \
+    SHADE_LANE(name##_ggx, tier, SC_BATCH_GGX)                                                     \
+    void K(name)(const sc_batch_args *a);                                                          \
+    void K(name)(const sc_batch_args *a)                                                           \
+    {                                                                                              \
+        shade_uniforms u;                                                                          \
+        sc_batch_args b = with_shade_uniforms(a, tier, &u);                                        \
+        switch (a->scene->brdf) {                                                                  \
+        case SC_BATCH_LAMBERT: run_n(&b, 9, 3, name##_lambert); break;                             \
+        case SC_BATCH_BLINN_PHONG: run_n(&b, 9, 3, name##_blinn); break;                           \
+        default: run_n(&b, 9, 3, name##_ggx); break;                                               \
+        }                                                                                          \
     }
 SHADE_KERNEL(shade_accurate, ACCURATE)
 SHADE_KERNEL(shade_bits12, FAST12)

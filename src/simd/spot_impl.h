@@ -47,8 +47,8 @@ static float float_at_most(double x)
 static inline void spot_setup_opengl(const void *params, func_uniforms *u)
 {
     const sc_batch_spot_params *p = params;
-    *u = (func_uniforms){{float_at_least(cos(p->cutoff * deg)), p->exponent,
-                          p->cutoff == 180.0f ? 1.0f : 0.0f}};
+    *u = (func_uniforms){
+        {float_at_least(cos(p->cutoff * deg)), p->exponent, p->cutoff == 180.0f ? 1.0f : 0.0f}};
 }
 
 /* k: cos θ_p (at least), cos θ_u (at most) as hi + lo, 1/(cos θ_p − cos θ_u), exponent: the

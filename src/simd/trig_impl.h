@@ -14,8 +14,7 @@
  * 5 terms (4.3e-9). */
 static const float sin_c3[3] = {0.00762579659446825f, -0.16601839683017208f, 0.9999111957241367f};
 static const float sin_c5[5] = {2.604920700948167e-06f, -0.00019808936593914233f,
-                                0.008333049100952087f, -0.1666665790378068f,
-                                0.9999999956715665f};
+                                0.008333049100952087f, -0.1666665790378068f, 0.9999999956715665f};
 
 /* π/2 = pio2_hi + pio2_lo + 1.7e-13: pio2_hi has 11 significant bits, so m·pio2_hi is exact
  * for |m| < 2^13, and x − m·pio2_hi is exact where it matters (Sterbenz). */
@@ -42,7 +41,10 @@ static inline vf clamp_trig(vf x)
     return vf_min(vf_max(x, vf_set1(-fast_trig_limit)), vf_set1(fast_trig_limit));
 }
 
-static inline vm outside_trig(vf x) { return vm_or(vf_isnan(x), vf_lt(vf_set1(fast_trig_limit), vf_abs(x))); }
+static inline vm outside_trig(vf x)
+{
+    return vm_or(vf_isnan(x), vf_lt(vf_set1(fast_trig_limit), vf_abs(x)));
+}
 
 /* sin x = (−1)^k sin(x − kπ), k = rint(x/π): m = 2k */
 static inline vf sin_fast(vf x, const float *c, int n)
@@ -86,11 +88,10 @@ static inline vf minus_from(vf a, float c_hi, float c_lo)
  * values >= √2), 9 terms (4.1e-9). */
 static const float acos_c4[4] = {-0.018192852640625243f, 0.07344754367998303f,
                                  -0.21180357102370512f, 1.5707106950252874f};
-static const float acos_c9[9] = {0.0006845318166245465f, -0.003974577703820064f,
-                                 0.011028380666317037f,  -0.02072766525325272f,
-                                 0.03257117017408731f,   -0.05059357388390752f,
-                                 0.08903013693965323f,   -0.2146011607316858f,
-                                 1.570796322643815f};
+static const float acos_c9[9] = {
+    0.0006845318166245465f, -0.003974577703820064f, 0.011028380666317037f,
+    -0.02072766525325272f,  0.03257117017408731f,   -0.05059357388390752f,
+    0.08903013693965323f,   -0.2146011607316858f,   1.570796322643815f};
 
 /* acos |x| = √(1 − |x|)·p(|x|) (the form of Abramowitz & Stegun 4.4.45, refitted), and
  * acos x = π − acos |x| for x < 0. |x| > 1 and NaN give NaN through the square root. */
@@ -164,12 +165,17 @@ static const float cody_waite_limit_f = 0x1.921fb6p+19f;
 
 /* sin(r)/r = Σ (−1)^j r^(2j)/(2j+1)!, j = 0..7, and cos(r) = Σ (−1)^j r^(2j)/(2j)!, j = 0..8:
  * the Taylor series of sincos.c, truncated below 2^-55 on |r| <= π/4. */
-static const double sin_taylor[8] = {1.0,          -1.0 / 6,         1.0 / 120,
-                                     -1.0 / 5040,  1.0 / 362880,     -1.0 / 39916800,
-                                     1.0 / 6227020800.0, -1.0 / 1307674368000.0};
-static const double cos_taylor[9] = {1.0,          -1.0 / 2,        1.0 / 24,
-                                     -1.0 / 720,   1.0 / 40320,     -1.0 / 3628800,
-                                     1.0 / 479001600, -1.0 / 87178291200.0,
+static const double sin_taylor[8] = {
+    1.0,          -1.0 / 6,        1.0 / 120,          -1.0 / 5040,
+    1.0 / 362880, -1.0 / 39916800, 1.0 / 6227020800.0, -1.0 / 1307674368000.0};
+static const double cos_taylor[9] = {1.0,
+                                     -1.0 / 2,
+                                     1.0 / 24,
+                                     -1.0 / 720,
+                                     1.0 / 40320,
+                                     -1.0 / 3628800,
+                                     1.0 / 479001600,
+                                     -1.0 / 87178291200.0,
                                      1.0 / 20922789888000.0};
 
 static inline vdm quadrant_bit(vl q, long long bit)
@@ -202,30 +208,39 @@ static inline vm outside_cody_waite(vf x)
     return vm_or(vf_isnan(x), vf_le(vf_set1(cody_waite_limit_f), vf_abs(x)));
 }
 
-static inline vf sin_u1(vf x) { return fixup1(outside_cody_waite(x), x, on_doubles(x, sin_d), sc_sinf); }
-static inline vf cos_u1(vf x) { return fixup1(outside_cody_waite(x), x, on_doubles(x, cos_d), sc_cosf); }
+static inline vf sin_u1(vf x)
+{
+    return fixup1(outside_cody_waite(x), x, on_doubles(x, sin_d), sc_sinf);
+}
+static inline vf cos_u1(vf x)
+{
+    return fixup1(outside_cody_waite(x), x, on_doubles(x, cos_d), sc_cosf);
+}
 
 static const double pi_d = 3.14159265358979323846;
 static const double sqrt3_d = 1.73205080756887729353;
 static const double tan_pi_12_d = 0.26794919243112270647;
 
 /* (−1)^j/(2j+1), j = 0..15: atan(u)/u = Σ (−1)^j u^(2j)/(2j+1) (atan.c) */
-static const double atan_series[16] = {1.0,      -1.0 / 3,  1.0 / 5,  -1.0 / 7,
-                                       1.0 / 9,  -1.0 / 11, 1.0 / 13, -1.0 / 15,
-                                       1.0 / 17, -1.0 / 19, 1.0 / 21, -1.0 / 23,
-                                       1.0 / 25, -1.0 / 27, 1.0 / 29, -1.0 / 31};
+static const double atan_series[16] = {
+    1.0,      -1.0 / 3,  1.0 / 5,  -1.0 / 7,  1.0 / 9,  -1.0 / 11, 1.0 / 13, -1.0 / 15,
+    1.0 / 17, -1.0 / 19, 1.0 / 21, -1.0 / 23, 1.0 / 25, -1.0 / 27, 1.0 / 29, -1.0 / 31};
 
 /* atan t for 0 <= t <= 1: above tan(π/12), π/6 + atan((√3 t − 1)/(√3 + t)) (atan.c) */
 static inline vd atan_unit_d(vd t)
 {
     vdm big = vd_lt(vd_set1(tan_pi_12_d), t);
-    vd shifted = vd_div(vd_sub(vd_mul(vd_set1(sqrt3_d), t), vd_set1(1.0)), vd_add(vd_set1(sqrt3_d), t));
+    vd shifted = vd_div(vd_sub(vd_mul(vd_set1(sqrt3_d), t), vd_set1(1.0)),
+                        vd_add(vd_set1(sqrt3_d), t));
     vd u = vd_select(big, shifted, t);
     vd base = vd_select(big, vd_set1(pi_d / 6.0), vd_set1(0.0));
     return vd_fma(u, vd_horner(vd_mul(u, u), atan_series, 16), base);
 }
 
-static inline vd abs_d(vd x) { return vl_as_vd(vl_and(vd_as_vl(x), vl_set1(0x7fffffffffffffffLL))); }
+static inline vd abs_d(vd x)
+{
+    return vl_as_vd(vl_and(vd_as_vl(x), vl_set1(0x7fffffffffffffffLL)));
+}
 
 /* |atan2(y, x)| in [0, π] (sc_k_atan2 without its special cases): the ratio of the smaller to
  * the larger magnitude, then the quadrant. x < 0 stands for signbit(x): they differ at x = −0,
@@ -255,7 +270,8 @@ static inline vd acos_d(vd x)
 static inline vf atan2_u1(vf y, vf x)
 {
     vm zeros = vm_and(vf_eq(x, vf_set1(0.0f)), vf_eq(y, vf_set1(0.0f)));
-    vm infinities = vm_and(vf_eq(vf_abs(x), vf_set1(INFINITY)), vf_eq(vf_abs(y), vf_set1(INFINITY)));
+    vm infinities = vm_and(vf_eq(vf_abs(x), vf_set1(INFINITY)),
+                           vf_eq(vf_abs(y), vf_set1(INFINITY)));
     vm special = vm_or(vm_or(vf_isnan(x), vf_isnan(y)), vm_or(zeros, infinities));
     return fixup2(special, y, x, on_doubles2(y, x, atan2_d), sc_atan2f);
 }

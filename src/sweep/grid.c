@@ -44,8 +44,10 @@ static int parse_range(const char *arg, const char *text, sc_sweep_var *v, char 
     if (!c2 || strchr(c2 + 1, ':') || parse_number(text, c1, &v->start) < 0 ||
         parse_number(c1 + 1, c2, &v->stop) < 0 || stop == c2 + 1 || *stop != '\0' ||
         errno == ERANGE || count < 1) {
-        snprintf(err, errsize, "--var %s: expected NAME=START:STOP:COUNT (finite numbers, "
-                               "COUNT >= 1) or NAME=V1,V2,...", arg);
+        snprintf(err, errsize,
+                 "--var %s: expected NAME=START:STOP:COUNT (finite numbers, "
+                 "COUNT >= 1) or NAME=V1,V2,...",
+                 arg);
         return -1;
     }
     v->count = count;
@@ -53,8 +55,7 @@ static int parse_range(const char *arg, const char *text, sc_sweep_var *v, char 
     return 0;
 }
 
-static int parse_list(const char *arg, const char *text, sc_sweep_var *v, char *err,
-                      size_t errsize)
+static int parse_list(const char *arg, const char *text, sc_sweep_var *v, char *err, size_t errsize)
 {
     long n = 1;
     for (const char *p = text; *p; p++)
@@ -73,8 +74,8 @@ static int parse_list(const char *arg, const char *text, sc_sweep_var *v, char *
         const char *end = strchr(p, ',');
         end = end ? end : p + strlen(p);
         if (parse_number(p, end, &v->list[i]) < 0) {
-            snprintf(err, errsize, "--var %s: '%.*s' is not a finite number", arg,
-                     (int)(end - p), p);
+            snprintf(err, errsize, "--var %s: '%.*s' is not a finite number", arg, (int)(end - p),
+                     p);
             sc_sweep_var_free(v);
             return -1;
         }
@@ -92,8 +93,10 @@ int sc_sweep_var_parse(const char *arg, sc_sweep_var *out, char *err, size_t err
     memset(out, 0, sizeof *out);
     size_t len = sc_sweep_identifier_length(arg);
     if (len == 0 || arg[len] != '=' || len >= SC_SWEEP_NAME_MAX) {
-        snprintf(err, errsize, "--var %s: expected NAME=... with NAME an identifier of at most "
-                               "%d characters", arg, SC_SWEEP_NAME_MAX - 1);
+        snprintf(err, errsize,
+                 "--var %s: expected NAME=... with NAME an identifier of at most "
+                 "%d characters",
+                 arg, SC_SWEEP_NAME_MAX - 1);
         return -1;
     }
     memcpy(out->name, arg, len);
@@ -109,8 +112,10 @@ int sc_sweep_var_set_log(sc_sweep_var *v, char *err, size_t errsize)
         return -1;
     }
     if (!(v->start * v->stop > 0.0)) {
-        snprintf(err, errsize, "--log: %s=%g:%g: geometric spacing needs ends of the same sign, "
-                               "not zero", v->name, v->start, v->stop);
+        snprintf(err, errsize,
+                 "--log: %s=%g:%g: geometric spacing needs ends of the same sign, "
+                 "not zero",
+                 v->name, v->start, v->stop);
         return -1;
     }
     v->spacing = SC_SPACING_LOG;
@@ -147,7 +152,7 @@ void sc_sweep_var_free(sc_sweep_var *v)
 
 int sc_sweep_grid_add(sc_sweep_grid *g, sc_sweep_var *v, char *err, size_t errsize)
 {
-    const char *why = g->n == SC_SWEEP_MAX_VARS           ? "too many variables"
+    const char *why = g->n == SC_SWEEP_MAX_VARS             ? "too many variables"
                       : sc_sweep_grid_find(g, v->name) >= 0 ? "given twice"
                                                             : NULL;
     if (why) {

@@ -32,8 +32,10 @@ int sc_sweep_image_init(sc_image *img, const sc_sweep_grid *g, int n_results, ch
     static const char *const y[] = {"Y"}, *const rgba[] = {"R", "G", "B", "A"};
     memset(img, 0, sizeof *img);
     if (g->n != 2 || n_results < 1 || n_results > 4) {
-        snprintf(err, errsize, "an image needs exactly two variables (width, height) and 1 to 4 "
-                               "result columns, not %d and %d", g->n, n_results);
+        snprintf(err, errsize,
+                 "an image needs exactly two variables (width, height) and 1 to 4 "
+                 "result columns, not %d and %d",
+                 g->n, n_results);
         return -1;
     }
     double values = (double)g->var[0].count * (double)g->var[1].count * n_results;
@@ -45,8 +47,8 @@ int sc_sweep_image_init(sc_image *img, const sc_sweep_grid *g, int n_results, ch
     }
     if (sc_image_init(img, (int)g->var[0].count, (int)g->var[1].count, n_results,
                       n_results == 1 ? y : rgba) < 0) { /* the arguments are valid: no memory */
-        snprintf(err, errsize, "out of memory for an image of %ld x %ld pixels",
-                 g->var[0].count, g->var[1].count);
+        snprintf(err, errsize, "out of memory for an image of %ld x %ld pixels", g->var[0].count,
+                 g->var[1].count);
         return -2;
     }
     return 0;
@@ -68,8 +70,7 @@ int sc_sweep_image_write(const char *path, const sc_image *img, sc_pixel_type ty
     sc_sweep_describe_var(&g->var[0], x_range, sizeof x_range);
     sc_sweep_describe_var(&g->var[1], y_range, sizeof y_range);
     snprintf(cmd, sizeof cmd, "%s", command);
-    const sc_image_attr attrs[] = {{"shadecalc:command", cmd},
-                                   {"shadecalc:x_range", x_range},
-                                   {"shadecalc:y_range", y_range}};
+    const sc_image_attr attrs[] = {
+        {"shadecalc:command", cmd}, {"shadecalc:x_range", x_range}, {"shadecalc:y_range", y_range}};
     return sc_exr_write(path, img, type, attrs, 3, err, errsize);
 }

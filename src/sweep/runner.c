@@ -104,8 +104,7 @@ static void *worker_main(void *p)
 }
 
 /* Writes and consumes a ready slot in the calling thread. */
-static sc_sweep_status drain_block(runner *r, uint64_t block, slot *s, char *err,
-                                   size_t errsize)
+static sc_sweep_status drain_block(runner *r, uint64_t block, slot *s, char *err, size_t errsize)
 {
     const sc_sweep_job *job = r->job;
     if (job->table && s->text_len && fwrite(s->text, 1, s->text_len, job->out) != s->text_len) {
@@ -115,8 +114,7 @@ static sc_sweep_status drain_block(runner *r, uint64_t block, slot *s, char *err
     uint64_t first = block * (uint64_t)r->block_rows;
     for (int i = 0; job->consume && i < s->rows; i++) {
         char msg[ERR_MAX - 32];
-        if (job->consume(job->user, first + (uint64_t)i,
-                         s->vars + (size_t)i * (size_t)r->n_vars,
+        if (job->consume(job->user, first + (uint64_t)i, s->vars + (size_t)i * (size_t)r->n_vars,
                          s->results + (size_t)i * (size_t)job->n_results, msg, sizeof msg) < 0) {
             snprintf(err, errsize, "row %llu: %s", (unsigned long long)(first + (uint64_t)i + 1),
                      msg);
@@ -231,7 +229,8 @@ sc_sweep_status sc_sweep_run(const sc_sweep_job *job, char *err, size_t errsize)
     r.row_max = job->table ? sc_sweep_row_max(job->table) : 0;
     sc_sweep_status status = SC_SWEEP_NO_MEMORY;
     if (alloc_slots(&r) == 0)
-        status = threads > 1 ? run_threads(&r, threads, err, errsize) : run_inline(&r, err, errsize);
+        status = threads > 1 ? run_threads(&r, threads, err, errsize)
+                             : run_inline(&r, err, errsize);
     free_slots(&r);
     if (status == SC_SWEEP_NO_MEMORY)
         snprintf(err, errsize, "out of memory");

@@ -29,8 +29,8 @@ static int variable_at(const char *s, const sc_sweep_grid *g, size_t *used, char
     return k;
 }
 
-int sc_sweep_substitute(const char *text, const sc_sweep_grid *g, const double *values,
-                        char *out, size_t size, char *err, size_t errsize)
+int sc_sweep_substitute(const char *text, const sc_sweep_grid *g, const double *values, char *out,
+                        size_t size, char *err, size_t errsize)
 {
     size_t n = 0;
     for (const char *p = text; *p;) {

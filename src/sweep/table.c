@@ -62,8 +62,8 @@ static int append_json_name(char *buf, size_t size, size_t *n, const char *name)
     return bad ? -1 : append(buf, size, n, "\": ");
 }
 
-static int append_value(char *buf, size_t size, size_t *n, const sc_sweep_table *t, int k,
-                        double x, sc_prec p)
+static int append_value(char *buf, size_t size, size_t *n, const sc_sweep_table *t, int k, double x,
+                        sc_prec p)
 {
     char number[NUMBER_MAX];
     sc_format_shortest(number, sizeof number, x, p);

@@ -69,7 +69,10 @@ const char *sc_suggest_among(const char *word, const char *const *names)
 static size_t utf8_length(const unsigned char *s, size_t len)
 {
     unsigned char c = s[0];
-    size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+    size_t n = c >= 0xc2 && c <= 0xdf   ? 2
+               : c >= 0xe0 && c <= 0xef ? 3
+               : c >= 0xf0 && c <= 0xf4 ? 4
+                                        : 0;
     if (n == 0 || n > len)
         return 0;
     /* The second byte's range excludes overlong forms, surrogates and code points > U+10FFFF. */

@@ -25,10 +25,7 @@ static float float_of(uint32_t u)
     return x;
 }
 
-int exh_same(float a, float b)
-{
-    return (isnan(a) && isnan(b)) || bits_of(a) == bits_of(b);
-}
+int exh_same(float a, float b) { return (isnan(a) && isnan(b)) || bits_of(a) == bits_of(b); }
 
 /* The half-width of the interval the decision rounds: the bound and the two ends are computed
  * in binary64; 2^-20 of the bound covers the roundings inside the bound's formula,
@@ -353,8 +350,9 @@ int exh_write_misses(const char *path, const exh_subject *s, const exh_stats *st
     FILE *f = fopen(tmp, "w");
     if (!f)
         return -1;
-    int bad = fprintf(f, "# %s: %llu inputs, %llu not correctly rounded (input, result, correct "
-                         "result, error in ULPs)\n",
+    int bad = fprintf(f,
+                      "# %s: %llu inputs, %llu not correctly rounded (input, result, correct "
+                      "result, error in ULPs)\n",
                       s->name, (unsigned long long)st->inputs, (unsigned long long)st->wrong) < 0;
     for (size_t i = 0; i < st->n_misses && !bad; i++)
         bad = write_miss(f, s, &st->misses[i]) < 0;

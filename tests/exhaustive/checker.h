@@ -37,8 +37,8 @@ typedef int (*exh_mpfr1_fn)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
 typedef int (*exh_mpfr2_fn)(mpfr_ptr, mpfr_srcptr, mpfr_srcptr, mpfr_rnd_t);
 
 typedef struct exh_subject {
-    const char *name;  /* "exp" (highp), "exp u1 avx2" (batch) */
-    int arity;         /* 1 or 2 */
+    const char *name; /* "exp" (highp), "exp u1 avx2" (batch) */
+    int arity;        /* 1 or 2 */
     /* the function under test: a binary32 function, or a batch kernel (entry->fn) */
     float (*f1)(float);
     float (*f2)(float, float);

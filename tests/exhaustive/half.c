@@ -24,10 +24,10 @@ void exh_half_check(const exh_subject *s, exh_half_stats *out)
         float x = (float)sc_half_to_double((uint16_t)h), hp = s->f1(x);
         out->inputs++;
         out->highp_wrong += !exh_same(hp, correctly_rounded(s, x));
-        out->mediump_mismatch +=
-            !same_value(s->in_precision(SC_MEDIUMP, (double)x), sc_round_half((double)hp));
-        out->lowp_mismatch +=
-            !same_value(s->in_precision(SC_LOWP, (double)x), sc_round_lowp((double)hp));
+        out->mediump_mismatch += !same_value(s->in_precision(SC_MEDIUMP, (double)x),
+                                             sc_round_half((double)hp));
+        out->lowp_mismatch += !same_value(s->in_precision(SC_LOWP, (double)x),
+                                          sc_round_lowp((double)hp));
         /* binary16 in MPFR's terms: 11 bits, 2^-24 = 2^-23/2, 65504 < 2^16 */
         double direct = (double)exh_mpfr_round(s, x, 0.0f, 11, -23, 16);
         out->double_rounded += !same_value(direct, sc_round_half((double)hp));

@@ -66,9 +66,10 @@ static int parse_number(const char *s, double *out)
 
 static int usage(const char *msg, const char *arg)
 {
-    fprintf(stderr, "exhaustive: %s%s%s\nusage: exhaustive [--threads N] [--stride S] "
-                    "[--range LO HI] [--pairs N] [--audit] [--only NAME,...] "
-                    "[--groups highp,batch,pairs,half] [--outdir DIR]\n",
+    fprintf(stderr,
+            "exhaustive: %s%s%s\nusage: exhaustive [--threads N] [--stride S] "
+            "[--range LO HI] [--pairs N] [--audit] [--only NAME,...] "
+            "[--groups highp,batch,pairs,half] [--outdir DIR]\n",
             msg, arg ? ": " : "", arg ? arg : "");
     return 2;
 }
@@ -76,8 +77,15 @@ static int usage(const char *msg, const char *arg)
 static int parse_args(int argc, char **argv, options *o)
 {
     long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-    *o = (options){cpus > 0 ? (int)cpus : 1, 0, 1, 0, 1ULL << 32, 1000000000ULL, NULL,
-                   "highp,batch,pairs,half", "build/exhaustive"};
+    *o = (options){cpus > 0 ? (int)cpus : 1,
+                   0,
+                   1,
+                   0,
+                   1ULL << 32,
+                   1000000000ULL,
+                   NULL,
+                   "highp,batch,pairs,half",
+                   "build/exhaustive"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         double v, w;
@@ -85,11 +93,11 @@ static int parse_args(int argc, char **argv, options *o)
         if (strcmp(a, "--threads") == 0 && more && parse_number(argv[++i], &v) == 0 && v >= 1 &&
             v <= 256)
             o->threads = (int)v;
-        else if (strcmp(a, "--stride") == 0 && more && parse_number(argv[++i], &v) == 0 &&
-                 v >= 1 && v < 0x1p32 && v == floor(v))
+        else if (strcmp(a, "--stride") == 0 && more && parse_number(argv[++i], &v) == 0 && v >= 1 &&
+                 v < 0x1p32 && v == floor(v))
             o->stride = (uint64_t)v;
-        else if (strcmp(a, "--pairs") == 0 && more && parse_number(argv[++i], &v) == 0 &&
-                 v >= 0 && v < 0x1p50 && v == floor(v))
+        else if (strcmp(a, "--pairs") == 0 && more && parse_number(argv[++i], &v) == 0 && v >= 0 &&
+                 v < 0x1p50 && v == floor(v))
             o->pairs = (uint64_t)v;
         else if (strcmp(a, "--range") == 0 && i + 2 < argc && parse_number(argv[i + 1], &v) == 0 &&
                  parse_number(argv[i + 2], &w) == 0 && v >= 0 && w > v && w <= FLT_MAX) {

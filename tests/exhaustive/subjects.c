@@ -13,7 +13,11 @@
 
 static double rel(double eps, double a) { return eps * fabs(a); }
 
-static double bound_exp2(float x, float y, double a) { (void)x, (void)y; return rel(0x1p-47, a); }
+static double bound_exp2(float x, float y, double a)
+{
+    (void)x, (void)y;
+    return rel(0x1p-47, a);
+}
 /* exp.c: the exponent's error grows with |x| up to the clamp of |x log2 e| at 1000 (|x| < 694);
  * beyond, the core is 2^±1000 within the exp2 bound, and the exact value rounds the same. */
 static double bound_exp(float x, float y, double a)
@@ -22,11 +26,31 @@ static double bound_exp(float x, float y, double a)
     double ax = fabs((double)x);
     return rel(ax < 694.0 ? 0x1p-47 + 0x1p-51 * ax : 0x1p-47, a);
 }
-static double bound_log(float x, float y, double a) { (void)x, (void)y; return rel(0x1p-48, a); }
-static double bound_atan(float x, float y, double a) { (void)x, (void)y; return rel(0x1p-47, a); }
-static double bound_46(float x, float y, double a) { (void)x, (void)y; return rel(0x1p-46, a); }
-static double bound_sqrt(float x, float y, double a) { (void)x, (void)y; return rel(0x1p-53, a); }
-static double bound_51(float x, float y, double a) { (void)x, (void)y; return rel(0x1p-51, a); }
+static double bound_log(float x, float y, double a)
+{
+    (void)x, (void)y;
+    return rel(0x1p-48, a);
+}
+static double bound_atan(float x, float y, double a)
+{
+    (void)x, (void)y;
+    return rel(0x1p-47, a);
+}
+static double bound_46(float x, float y, double a)
+{
+    (void)x, (void)y;
+    return rel(0x1p-46, a);
+}
+static double bound_sqrt(float x, float y, double a)
+{
+    (void)x, (void)y;
+    return rel(0x1p-53, a);
+}
+static double bound_51(float x, float y, double a)
+{
+    (void)x, (void)y;
+    return rel(0x1p-51, a);
+}
 
 /* sincos.c: the reduction is exact for |x| < 0.78 (k = 0), else r carries 2^-99.7 absolute. */
 static double reduction_error(float x) { return fabsf(x) < 0.78f ? 0.0 : 0x1p-99; }
@@ -60,28 +84,20 @@ static int rec_sqrt_glsl(mpfr_ptr r, mpfr_srcptr x, mpfr_rnd_t rnd)
     return mpfr_rec_sqrt(r, x, rnd);
 }
 
-#define HIGHP1(name, bound, mpfr)                                                                 \
-    {#name, 1, sc_##name##f, NULL, NULL, sc_k_##name##_core, NULL, bound, 1, mpfr, NULL,           \
-     sc_p_##name},
-#define HIGHP2(name, bound, mpfr)                                                                 \
+#define HIGHP1(name, bound, mpfr)                                                                  \
+    {#name, 1, sc_##name##f, NULL, NULL,       sc_k_##name##_core, NULL,                           \
+     bound, 1, mpfr,         NULL, sc_p_##name},
+#define HIGHP2(name, bound, mpfr)                                                                  \
     {#name, 2, NULL, sc_##name##f, NULL, NULL, sc_k_##name##_core, bound, 1, NULL, mpfr, NULL},
 
 const exh_subject exh_highp[] = {
-    HIGHP1(exp, bound_exp, mpfr_exp)
-    HIGHP1(exp2, bound_exp2, mpfr_exp2)
-    HIGHP1(log, bound_log, mpfr_log)
-    HIGHP1(log2, bound_log, mpfr_log2)
-    HIGHP1(sin, bound_sincos, mpfr_sin)
-    HIGHP1(cos, bound_sincos, mpfr_cos)
-    HIGHP1(tan, bound_tan, mpfr_tan)
-    HIGHP1(asin, bound_46, mpfr_asin)
-    HIGHP1(acos, bound_46, mpfr_acos)
-    HIGHP1(atan, bound_atan, mpfr_atan)
-    HIGHP1(sqrt, bound_sqrt, mpfr_sqrt)
-    HIGHP1(inversesqrt, bound_51, rec_sqrt_glsl)
-    HIGHP2(pow, bound_pow, mpfr_pow)
-    HIGHP2(atan2, bound_46, mpfr_atan2)
-};
+    HIGHP1(exp, bound_exp, mpfr_exp) HIGHP1(exp2, bound_exp2, mpfr_exp2)
+        HIGHP1(log, bound_log, mpfr_log) HIGHP1(log2, bound_log, mpfr_log2)
+            HIGHP1(sin, bound_sincos, mpfr_sin) HIGHP1(cos, bound_sincos, mpfr_cos)
+                HIGHP1(tan, bound_tan, mpfr_tan) HIGHP1(asin, bound_46, mpfr_asin)
+                    HIGHP1(acos, bound_46, mpfr_acos) HIGHP1(atan, bound_atan, mpfr_atan) HIGHP1(
+                        sqrt, bound_sqrt, mpfr_sqrt) HIGHP1(inversesqrt, bound_51, rec_sqrt_glsl)
+                        HIGHP2(pow, bound_pow, mpfr_pow) HIGHP2(atan2, bound_46, mpfr_atan2)};
 const int exh_highp_count = (int)(sizeof exh_highp / sizeof exh_highp[0]);
 
 /* ---- the u1 batch kernels against glibc's binary64 functions ---- */
@@ -135,8 +151,8 @@ int exh_batch_subjects(exh_subject *out, char (*names)[EXH_NAME_MAX], int max)
         if (strcmp(e->tier, "u1") != 0 || e->n_in != 1 || !ref || !sc_isa_supported(e->isa))
             continue;
         snprintf(names[n], EXH_NAME_MAX, "%s u1 %s", e->kernel, sc_isa_name(e->isa));
-        out[n] = (exh_subject){names[n], 1,  NULL,     NULL, e,    ref->approx, NULL,
-                               ref->bound, 0, ref->mpfr, NULL, NULL};
+        out[n] = (exh_subject){names[n], 1,          NULL, NULL,      e,    ref->approx,
+                               NULL,     ref->bound, 0,    ref->mpfr, NULL, NULL};
         n++;
     }
     return n;
@@ -212,7 +228,8 @@ static void pow_exact(uint64_t *s, float *x, float *y)
 static void pow_pair(uint64_t *s, float *x, float *y)
 {
     switch (next(s) % 8) {
-    case 0: case 1: pow_near_one(s, x, y); break;
+    case 0:
+    case 1: pow_near_one(s, x, y); break;
     case 2: pow_near_limits(s, x, y); break;
     case 3: pow_large_y(s, x, y); break;
     case 4: pow_exact(s, x, y); break;
@@ -224,9 +241,7 @@ static void pow_pair(uint64_t *s, float *x, float *y)
         *x = any_float(s);
         *y = any_float(s);
         break;
-    default:
-        *x = magnitude(s, -149, 127);
-        *y = random_sign(s, magnitude(s, -24, 8));
+    default: *x = magnitude(s, -149, 127); *y = random_sign(s, magnitude(s, -24, 8));
     }
 }
 
@@ -251,7 +266,10 @@ static void atan2_near(uint64_t *s, float *y, float *x)
 static void atan2_pair(uint64_t *s, float *y, float *x)
 {
     switch (next(s) % 6) {
-    case 0: *y = any_float(s); *x = any_float(s); break;
+    case 0:
+        *y = any_float(s);
+        *x = any_float(s);
+        break;
     case 1: atan2_ratio(s, y, x, 0); break;
     case 2: atan2_ratio(s, y, x, 1); break;
     case 3: atan2_near(s, y, x); break;

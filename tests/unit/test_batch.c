@@ -44,9 +44,9 @@ static size_t bound_inputs(void)
     return n > 0 ? (size_t)n : BOUND_INPUTS;
 }
 
-static const float specials[] = {0.0f, -0.0f, 0x1p-149f, -0x1p-149f, FLT_MIN, -FLT_MIN, 0.5f,
-                                 1.0f, 2.0f,  -1.0f,     FLT_MAX,   -FLT_MAX, INFINITY, -INFINITY,
-                                 NAN,  0.25f, 3.0f,      100.0f};
+static const float specials[] = {0.0f,     -0.0f,     0x1p-149f, -0x1p-149f, FLT_MIN, -FLT_MIN,
+                                 0.5f,     1.0f,      2.0f,      -1.0f,      FLT_MAX, -FLT_MAX,
+                                 INFINITY, -INFINITY, NAN,       0.25f,      3.0f,    100.0f};
 enum { N_SPECIALS = (int)(sizeof specials / sizeof specials[0]) };
 
 static uint64_t rng = 88172645463325252ULL;
@@ -117,13 +117,15 @@ static double element_ratio(const sc_batch_entry *e, const sc_batch_args *a, siz
     return sc_batch_error_element(e, a, i, &acc);
 }
 
-static void describe(const sc_batch_entry *e, const sc_batch_args *a, size_t i, char *buf, size_t size)
+static void describe(const sc_batch_entry *e, const sc_batch_args *a, size_t i, char *buf,
+                     size_t size)
 {
     int len = snprintf(buf, size, "%s %s %s at in=(", e->kernel, e->tier, sc_isa_name(e->isa));
     for (int j = 0; j < e->n_in && len > 0 && (size_t)len < size; j++)
         len += snprintf(buf + len, size - (size_t)len, "%s%a", j ? "," : "", (double)a->in[j][i]);
     for (int j = 0; j < e->n_out && len > 0 && (size_t)len < size; j++)
-        len += snprintf(buf + len, size - (size_t)len, "%s%a", j ? "," : ") got (", (double)a->out[j][i]);
+        len += snprintf(buf + len, size - (size_t)len, "%s%a", j ? "," : ") got (",
+                        (double)a->out[j][i]);
 }
 
 static const sc_batch_scene *scene_for(const sc_batch_entry *e)
@@ -201,10 +203,10 @@ static void every_stated_bound_holds(void **state)
 static int same_bits_expected(const sc_batch_entry *e)
 {
     return e->isa == SC_ISA_SSE41 && strcmp(e->tier, "u1") != 0 &&
-           strcmp(e->kernel, "inversesqrt") != 0 &&
-           strcmp(e->kernel, "dot") != 0 && strcmp(e->kernel, "reflect") != 0 &&
-           strcmp(e->kernel, "normalize") != 0 && strcmp(e->kernel, "length") != 0 &&
-           strcmp(e->kernel, "shade") != 0 && strcmp(e->kernel, "brdf") != 0 &&
+           strcmp(e->kernel, "inversesqrt") != 0 && strcmp(e->kernel, "dot") != 0 &&
+           strcmp(e->kernel, "reflect") != 0 && strcmp(e->kernel, "normalize") != 0 &&
+           strcmp(e->kernel, "length") != 0 && strcmp(e->kernel, "shade") != 0 &&
+           strcmp(e->kernel, "brdf") != 0 &&
            /* u1 pow in double lanes is not always sc_powf's bits near a rounding midpoint */
            strcmp(e->kernel, "atten_pixar") != 0 && strcmp(e->kernel, "spot_opengl") != 0 &&
            strcmp(e->kernel, "spot_directx") != 0;
@@ -228,8 +230,8 @@ static int in_domain(const sc_batch_entry *e, const float *v)
 /* Runs e and its scalar twin on n elements starting `offset` floats into the buffers, the
  * test values v placed at `lane`, random data elsewhere, and compares. */
 static void compare_with_scalar(const sc_batch_entry *e, const sc_batch_entry *s,
-                                const sc_batch_scene *scene, size_t n, size_t offset,
-                                size_t lane, const float *v)
+                                const sc_batch_scene *scene, size_t n, size_t offset, size_t lane,
+                                const float *v)
 {
     buffers b1, b2;
     buffers_init(&b1, e, n + offset, scene);
@@ -349,8 +351,8 @@ static void streaming_stores_give_the_same_bits(void **state)
         sc_batch_args whole = {{x + 1}, {o1 + 1}, N, NULL, NULL}; /* unaligned by one float */
         e->fn(&whole);
         for (size_t start = 0; start < N; start += 4096) {
-            sc_batch_args part = {{x + 1 + start}, {o2 + 1 + start}, N - start < 4096 ? N - start : 4096,
-                                  NULL, NULL};
+            sc_batch_args part = {
+                {x + 1 + start}, {o2 + 1 + start}, N - start < 4096 ? N - start : 4096, NULL, NULL};
             e->fn(&part);
         }
         for (size_t k = 1; k <= N; k++)

@@ -103,11 +103,19 @@ static void fill_references(const sc_batch_entry *e, run_buffers *b)
 
 static sc_batch_brdf_params brdf_params(sc_brdf_kind model, int form, int cos_flag)
 {
-    sc_batch_brdf_params p = {.model = model, .form = form, .cos = cos_flag,
-                              .D = SC_D_GGX, .G = SC_G_SMITH_CORRELATED, .F = SC_F_SCHLICK,
-                              .diff = {0.8f, 0.5f, 0.2f}, .spec = {0.2f, 0.3f, 0.4f},
-                              .f0 = {0.04f, 0.5f, 0.9f}, .m = 32.0f, .alpha = 0.3f,
-                              .sigma = 0.5f, .ior = 1.5f};
+    sc_batch_brdf_params p = {.model = model,
+                              .form = form,
+                              .cos = cos_flag,
+                              .D = SC_D_GGX,
+                              .G = SC_G_SMITH_CORRELATED,
+                              .F = SC_F_SCHLICK,
+                              .diff = {0.8f, 0.5f, 0.2f},
+                              .spec = {0.2f, 0.3f, 0.4f},
+                              .f0 = {0.04f, 0.5f, 0.9f},
+                              .m = 32.0f,
+                              .alpha = 0.3f,
+                              .sigma = 0.5f,
+                              .ior = 1.5f};
     return p;
 }
 
@@ -154,14 +162,15 @@ static void every_cook_torrance_within_bounds(void **state)
         for (int G = 0; G < 3; G++)
             for (int F = 0; F < 3; F++)
                 for (int k = 0; k < 2; k++) {
-                    sc_batch_brdf_params p =
-                        brdf_params(SC_BRDF_COOK_TORRANCE, k & 1 ? SC_CT_1982 : SC_CT_WALTER, k);
+                    sc_batch_brdf_params p = brdf_params(SC_BRDF_COOK_TORRANCE,
+                                                         k & 1 ? SC_CT_1982 : SC_CT_WALTER, k);
                     p.D = D;
                     p.G = G;
                     p.F = F;
                     p.alpha = alphas[(D + G + F + k) & 1];
                     char what[64];
-                    snprintf(what, sizeof what, "D %d G %d F %d alpha %g", D, G, F, (double)p.alpha);
+                    snprintf(what, sizeof what, "D %d G %d F %d alpha %g", D, G, F,
+                             (double)p.alpha);
                     check_brdf(&p, what);
                 }
 }
@@ -198,7 +207,8 @@ static void brdf_normal_incidence_by_hand(void **state)
     (void)state;
     float one[1] = {1.0f}, zero[1] = {0.0f}, r[1], g[1], bl[1];
     sc_batch_brdf_params p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_NORMALIZED, 1);
-    sc_batch_args a = {{zero, zero, one, zero, zero, one, zero, zero, one}, {r, g, bl}, 1, NULL, &p};
+    sc_batch_args a = {
+        {zero, zero, one, zero, zero, one, zero, zero, one}, {r, g, bl}, 1, NULL, &p};
     assert_int_equal(sc_batch_run("brdf", "bits16", &a), 0);
     /* c_diff/π + c_spec (m+8)/(8π), cos θ_i = 1 */
     double want = 0.8 / pi + 0.2 * 40.0 / (8.0 * pi);
@@ -222,8 +232,9 @@ static void check_function(const char *kernel, const void *params, double hi, co
     buffers_alloc(&b, e, N_FUNC, params);
     for (size_t i = 0; i < N_FUNC; i++)
         b.in[0][i] = (size_t)n_points > i ? points[i]
-                                          : (float)(hi * (double)(rng = rng * 6364136223846793005ULL +
-                                                                      1442695040888963407ULL) /
+                                          : (float)(hi *
+                                                    (double)(rng = rng * 6364136223846793005ULL +
+                                                                   1442695040888963407ULL) /
                                                     0x1p64);
     fill_references(e, &b);
     check_all_rows(kernel, &b, what);
@@ -234,8 +245,16 @@ static void attenuation_edges(void **state)
 {
     (void)state;
     const float points[] = {0.0f, 0x1p-149f, 1e-3f, 5.0f, 0x1.3ffffep+2f, 0x1.400002p+2f, 10.0f};
-    sc_batch_atten_params p = {.sc = 0.0f, .sl = 0.0f, .sq = 1.0f, .r_start = 5.0f, .r_end = 5.0f,
-                               .f_max = 3.0f, .f_c = 3.0f, .r_c = 5.0f, .s_e = 1.5f, .r_max = 5.0f};
+    sc_batch_atten_params p = {.sc = 0.0f,
+                               .sl = 0.0f,
+                               .sq = 1.0f,
+                               .r_start = 5.0f,
+                               .r_end = 5.0f,
+                               .f_max = 3.0f,
+                               .f_c = 3.0f,
+                               .r_c = 5.0f,
+                               .s_e = 1.5f,
+                               .r_max = 5.0f};
     int n = (int)(sizeof points / sizeof points[0]);
     check_function("atten_invsq", &p, 20.0, points, n, "r = 0");
     check_function("atten_clq", &p, 20.0, points, n, "pure quadratic, r = 0");
@@ -252,8 +271,16 @@ static void attenuation_edges(void **state)
 static void attenuation_by_hand(void **state)
 {
     (void)state;
-    sc_batch_atten_params p = {.sc = 0.0f, .sl = 0.0f, .sq = 1.0f, .r_start = 5.0f, .r_end = 5.0f,
-                               .f_max = 3.0f, .f_c = 3.0f, .r_c = 5.0f, .s_e = 1.5f, .r_max = 5.0f};
+    sc_batch_atten_params p = {.sc = 0.0f,
+                               .sl = 0.0f,
+                               .sq = 1.0f,
+                               .r_start = 5.0f,
+                               .r_end = 5.0f,
+                               .f_max = 3.0f,
+                               .f_c = 3.0f,
+                               .r_c = 5.0f,
+                               .s_e = 1.5f,
+                               .r_max = 5.0f};
     float r[4] = {0.0f, 5.0f, 0x1.400002p+2f, 20.0f}, out[4];
     sc_batch_args a = {{r}, {out}, 4, NULL, &p};
     assert_int_equal(sc_batch_run("atten_window", "u2", &a), 0);
@@ -297,7 +324,8 @@ static void spot_by_hand(void **state)
     assert_int_equal(sc_batch_run("spot_opengl", "u1", &a), 0);
     assert_true(out[0] == 1.0f && out[3] == 1.0f);
     for (int t = 0; t < 2; t++) {
-        assert_int_equal(sc_batch_run(t ? "spot_smoothstep" : "spot_directx", t ? "u8" : "u16", &a), 0);
+        assert_int_equal(sc_batch_run(t ? "spot_smoothstep" : "spot_directx", t ? "u8" : "u16", &a),
+                         0);
         /* cos 30° rounded to float is below or above the double cosine: 1 exactly when above */
         float at_edge = (double)c30 >= cos(30.0 * pi / 180.0) ? 1.0f : 0.0f;
         assert_true(out[0] == 0.0f && out[1] == at_edge && out[2] == 0.0f && out[3] == 1.0f);
@@ -429,7 +457,7 @@ static void plans_match_sc_shade(void **state)
         sc_light lights[4];
         sc_scene scene;
         make_plan_scene(models[m], lights, &scene);
-        double (*ref)[3] = malloc(N_PLAN * sizeof *ref);
+        double(*ref)[3] = malloc(N_PLAN * sizeof *ref);
         assert_non_null(ref);
         for (size_t i = 0; i < N_PLAN; i++)
             shade_double(&scene, &a, i, ref[i]);

@@ -206,8 +206,8 @@ static void fresnel_table(void **state)
 {
     (void)state;
     static const double theta[] = {0, 30, 45, 60, 80, 89};
-    static const double exact[] = {0.04,           0.0415226259758, 0.0502399110122,
-                                   0.0891867128022, 0.387704354691,  0.90418494978};
+    static const double exact[] = {
+        0.04, 0.0415226259758, 0.0502399110122, 0.0891867128022, 0.387704354691, 0.90418494978};
     static const double schlick[] = {0.04, 0.0400414365431, 0.0420692731244,
                                      0.07, 0.409910091022,  0.9191018918};
     for (int i = 0; i < 6; i++) {
@@ -244,8 +244,8 @@ static void extremes_stay_finite(void **state)
 {
     (void)state;
     static const double cases[][4] = {
-        {89.9999, 0, 30, 180},  {30, 0, 89.9999, 180}, {89.9999, 0, 89.9999, 180},
-        {45, 0, 45, 0},         {60, 0, 60, 180},      {0, 0, 0, 0},
+        {89.9999, 0, 30, 180},    {30, 0, 89.9999, 180}, {89.9999, 0, 89.9999, 180},
+        {45, 0, 45, 0},           {60, 0, 60, 180},      {0, 0, 0, 0},
         {89.9999, 0, 89.9999, 0}, {1e-30, 0, 1e-30, 90}, {90, 0, 90, 180},
     };
     static const double params[][2] = {{0, 0}, {1e6, 1e-30}, {1e4, 1e-4}, {1, 1}, {32, 0.3}};
@@ -264,12 +264,13 @@ static void extremes_stay_finite(void **state)
                                 b.G = (sc_masking)G;
                                 sc_brdf_terms t = eval_at((sc_prec)prec, &b, cases[c][0],
                                                           cases[c][1], cases[c][2], cases[c][3]);
-                                sc_brdf_terms ref = eval_at(SC_DOUBLE, &b, cases[c][0],
-                                                            cases[c][1], cases[c][2], cases[c][3]);
+                                sc_brdf_terms ref = eval_at(SC_DOUBLE, &b, cases[c][0], cases[c][1],
+                                                            cases[c][2], cases[c][3]);
                                 if (!acceptable(&t, &ref, (sc_prec)prec))
-                                    fail_msg("%s form %d m=%g a=%g D%d G%d case %zu prec %d: f = %g",
-                                             sc_brdf_kind_name((sc_brdf_kind)kind), form, b.m,
-                                             b.ax, D, G, c, prec, t.f[0]);
+                                    fail_msg(
+                                        "%s form %d m=%g a=%g D%d G%d case %zu prec %d: f = %g",
+                                        sc_brdf_kind_name((sc_brdf_kind)kind), form, b.m, b.ax, D,
+                                        G, c, prec, t.f[0]);
                             }
 }
 

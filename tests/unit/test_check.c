@@ -152,7 +152,8 @@ static void the_physical_findings(void **state)
         }
     }
     assert_true(fabs(best - 1.0752) < 1e-4 && fabs(best_m - 8.8) < 0.25);
-    sc_brdf duer = specular_only(SC_BRDF_WARD, SC_WARD_DUER), gmd = specular_only(SC_BRDF_WARD, SC_WARD_GMD);
+    sc_brdf duer = specular_only(SC_BRDF_WARD, SC_WARD_DUER),
+            gmd = specular_only(SC_BRDF_WARD, SC_WARD_GMD);
     duer.ax = duer.ay = gmd.ax = gmd.ay = 0.2;
     assert_true(albedo(&duer, 85) > 1.0);
     for (double t = 0; t < 90; t += 10)
@@ -187,8 +188,8 @@ static void narrow_lobes_are_resolved_or_refused(void **state)
         sc_albedo_result r;
         assert_int_equal(sc_albedo(&blinn, 0, 16, &r), 0);
         if (!(fabs(r.albedo[0] - exact) <= r.error[0] && r.error[0] < 2e-4))
-            fail_msg("m = %g: a(0) = %.12g ± %.2g, closed form %.12g", m, r.albedo[0],
-                     r.error[0], exact);
+            fail_msg("m = %g: a(0) = %.12g ± %.2g, closed form %.12g", m, r.albedo[0], r.error[0],
+                     exact);
         assert_int_equal(sc_albedo(&blinn, 60, 16, &r), 0);
         assert_rel(r.albedo[0], 0.25, 2e-4 + 10.0 / sqrt(m));
     }

@@ -16,12 +16,8 @@
 
 static const double pi = 3.14159265358979323846;
 
-static void assert_negative_zero(float x) {
-    assert_true(x == 0.0f && signbit(x));
-}
-static void assert_positive_zero(float x) {
-    assert_true(x == 0.0f && !signbit(x));
-}
+static void assert_negative_zero(float x) { assert_true(x == 0.0f && signbit(x)); }
+static void assert_positive_zero(float x) { assert_true(x == 0.0f && !signbit(x)); }
 
 /* Test inputs: small integers, halves and quarters, a few awkward floats, both signs. */
 static const float samples[] = {
@@ -35,7 +31,8 @@ static const float samples[] = {
 
 /* x·(float)(π/180): the constant is off by at most 2^-24 relative and the product is rounded,
  * so the result is within 1.5 ULP of the exact x·π/180. */
-static void radians_and_degrees_use_float_constants(void **state) {
+static void radians_and_degrees_use_float_constants(void **state)
+{
     (void)state;
     for (float d = -720.0f; d <= 720.0f; d += 0.375f) {
         assert_true(sc_ulp_error(SC_HIGHP, sc_radiansf(d), (double)d * pi / 180.0) <= 1.5);
@@ -49,7 +46,8 @@ static void radians_and_degrees_use_float_constants(void **state) {
 
 /* ---- abs, sign, floor, ceil ------------------------------------------------------------- */
 
-static void abs_sign_floor_ceil_are_exact(void **state) {
+static void abs_sign_floor_ceil_are_exact(void **state)
+{
     (void)state;
     for (int i = 0; i < N_SAMPLES; i++) {
         float x = samples[i];
@@ -66,7 +64,8 @@ static void abs_sign_floor_ceil_are_exact(void **state) {
 
 /* GLSL ES: sign(0) = 0.0. We return 0·x, which keeps the zero's sign: sign(−0) = −0 (equal to
  * 0.0 under ==). sign(NaN) = NaN. */
-static void sign_of_zero_keeps_the_sign_and_nan_stays_nan(void **state) {
+static void sign_of_zero_keeps_the_sign_and_nan_stays_nan(void **state)
+{
     (void)state;
     assert_positive_zero(sc_signf(0.0f));
     assert_negative_zero(sc_signf(-0.0f));
@@ -81,7 +80,8 @@ static void sign_of_zero_keeps_the_sign_and_nan_stays_nan(void **state) {
 /* fract(x) = x − floor(x), one float rounding of the exact difference. In double the difference
  * is exact, or (tiny negative x) within 2^-53 of 1 and far from any float midpoint, so rounding
  * it to float is the reference. */
-static void fract_is_x_minus_floor_x(void **state) {
+static void fract_is_x_minus_floor_x(void **state)
+{
     (void)state;
     for (int i = 0; i < N_SAMPLES; i++) {
         float x = samples[i];
@@ -96,7 +96,8 @@ static void fract_is_x_minus_floor_x(void **state) {
 }
 
 /* The formula's documented edge: for −2^-25 < x < 0, 1 + x rounds to 1.0 (not below 1). */
-static void fract_of_tiny_negative_x_rounds_to_one(void **state) {
+static void fract_of_tiny_negative_x_rounds_to_one(void **state)
+{
     (void)state;
     assert_true(sc_fractf(-0x1p-30f) == 1.0f);
     assert_true(sc_fractf(-0x1p-149f) == 1.0f);
@@ -106,7 +107,8 @@ static void fract_of_tiny_negative_x_rounds_to_one(void **state) {
 /* mod(x, y) = x − y·floor(x/y): the result takes the sign of y, unlike C fmod. The reference is
  * fmod (exact) moved into y's half-open interval. For these small operands the formula is exact
  * too: the rounded x/y cannot cross an integer, and the product and difference are exact. */
-static void mod_takes_the_sign_of_y(void **state) {
+static void mod_takes_the_sign_of_y(void **state)
+{
     (void)state;
     assert_true(sc_modf(-1.0f, 3.0f) == 2.0f);
     assert_true(sc_modf(1.0f, -3.0f) == -2.0f);
@@ -116,15 +118,18 @@ static void mod_takes_the_sign_of_y(void **state) {
     assert_true(sc_modf(7.0f, 0.5f) == 0.0f);
     for (int i = -40; i <= 40; i++)
         for (int j = -8; j <= 8; j++) {
-            if (j == 0) continue;
+            if (j == 0)
+                continue;
             double x = i * 0.25, y = j * 0.5, want = fmod(x, y);
-            if (want != 0.0 && (want < 0) != (y < 0)) want += y;
+            if (want != 0.0 && (want < 0) != (y < 0))
+                want += y;
             assert_true(sc_modf((float)x, (float)y) == (float)want);
         }
 }
 
 /* GLSL ES leaves y = 0 undefined: x/0 is ±Inf (or NaN), and the formula gives NaN. */
-static void mod_by_zero_is_nan(void **state) {
+static void mod_by_zero_is_nan(void **state)
+{
     (void)state;
     assert_true(isnan(sc_modf(1.0f, 0.0f)));
     assert_true(isnan(sc_modf(-1.0f, -0.0f)));
@@ -133,12 +138,14 @@ static void mod_by_zero_is_nan(void **state) {
 
 /* ---- min, max, clamp -------------------------------------------------------------------- */
 
-static void min_max_of_ordered_values(void **state) {
+static void min_max_of_ordered_values(void **state)
+{
     (void)state;
     for (int i = 0; i < N_SAMPLES; i++)
         for (int j = 0; j < N_SAMPLES; j++) {
             float x = samples[i], y = samples[j];
-            if (x == y) continue;
+            if (x == y)
+                continue;
             assert_true(sc_minf(x, y) == (float)fmin(x, y));
             assert_true(sc_maxf(x, y) == (float)fmax(x, y));
         }
@@ -146,7 +153,8 @@ static void min_max_of_ordered_values(void **state) {
 
 /* GLSL ES: min = y < x ? y : x, max = x < y ? y : x. So equal operands (±0) give x, a NaN y gives
  * x, and a NaN x gives NaN (the comparison is false). */
-static void min_max_return_x_on_ties_and_unordered(void **state) {
+static void min_max_return_x_on_ties_and_unordered(void **state)
+{
     (void)state;
     assert_negative_zero(sc_minf(-0.0f, 0.0f));
     assert_positive_zero(sc_minf(0.0f, -0.0f));
@@ -156,7 +164,8 @@ static void min_max_return_x_on_ties_and_unordered(void **state) {
     assert_true(sc_minf(-INFINITY, 3.0f) == -INFINITY && sc_maxf(-INFINITY, 3.0f) == 3.0f);
 }
 
-static void clamp_is_min_of_max(void **state) {
+static void clamp_is_min_of_max(void **state)
+{
     (void)state;
     for (float x = -3.0f; x <= 3.0f; x += 0.125f)
         assert_true(sc_clampf(x, -1.0f, 2.0f) == (float)fmin(fmax(x, -1.0), 2.0));
@@ -164,7 +173,8 @@ static void clamp_is_min_of_max(void **state) {
 }
 
 /* GLSL ES leaves lo > hi undefined; min(max(x, lo), hi) gives hi for every x. */
-static void clamp_with_lo_above_hi_returns_hi(void **state) {
+static void clamp_with_lo_above_hi_returns_hi(void **state)
+{
     (void)state;
     for (float x = -3.0f; x <= 3.0f; x += 0.5f)
         assert_true(sc_clampf(x, 1.0f, -1.0f) == -1.0f);
@@ -174,7 +184,8 @@ static void clamp_with_lo_above_hi_returns_hi(void **state) {
 
 /* x·(1 − a) + y·a is exact at the ends for finite x, y: a = 0 gives x·1 + y·0 = x, a = 1 gives
  * x·0 + y·1 = y (up to the sign of a zero: mix(−0, 1, 0) = −0 + +0 = +0). */
-static void mix_is_exact_at_both_ends(void **state) {
+static void mix_is_exact_at_both_ends(void **state)
+{
     (void)state;
     for (int i = 0; i < N_SAMPLES; i++)
         for (int j = 0; j < N_SAMPLES; j++) {
@@ -187,7 +198,8 @@ static void mix_is_exact_at_both_ends(void **state) {
 /* 1 − a is exact here; each product is rounded by half a ULP of itself (|terms| <= 2y for
  * |a| <= 2, 0 < x < y) and the sum by half a ULP of the result, so the error is at most
  * 4·y/|result| + 0.5 ULP of the result, extrapolation (a outside [0, 1]) included. */
-static void mix_is_the_glsl_formula(void **state) {
+static void mix_is_the_glsl_formula(void **state)
+{
     (void)state;
     assert_true(sc_mixf(1.0f, 3.0f, 0.5f) == 2.0f);
     assert_true(sc_mixf(1.0f, 3.0f, 2.0f) == 5.0f);
@@ -201,7 +213,8 @@ static void mix_is_the_glsl_formula(void **state) {
         }
 }
 
-static void step_is_zero_below_the_edge_and_one_from_it(void **state) {
+static void step_is_zero_below_the_edge_and_one_from_it(void **state)
+{
     (void)state;
     assert_true(sc_stepf(1.0f, 1.0f) == 1.0f);
     assert_true(sc_stepf(1.0f, 0x1.fffffep-1f) == 0.0f);
@@ -213,7 +226,8 @@ static void step_is_zero_below_the_edge_and_one_from_it(void **state) {
 
 /* t = clamp((x − e0)/(e1 − e0), 0, 1), t²(3 − 2t): against the same formula in double, where
  * each of the float operations adds at most half a ULP of its own result. */
-static void smoothstep_is_the_hermite_formula(void **state) {
+static void smoothstep_is_the_hermite_formula(void **state)
+{
     (void)state;
     for (float x = -1.0f; x <= 3.0f; x += 1.0f / 128) {
         double t = fmin(fmax(((double)x - 0.5) / (2.25 - 0.5), 0.0), 1.0);
@@ -229,7 +243,8 @@ static void smoothstep_is_the_hermite_formula(void **state) {
 
 /* GLSL ES leaves e0 >= e1 undefined; we return the formula's IEEE value: reversed edges give the
  * mirrored curve, e0 = e1 gives a step (0 below, 1 above, NaN at x = e0 from 0/0). */
-static void smoothstep_with_reversed_or_equal_edges_is_the_formula(void **state) {
+static void smoothstep_with_reversed_or_equal_edges_is_the_formula(void **state)
+{
     (void)state;
     assert_true(sc_smoothstepf(1.0f, 0.0f, 0.25f) == 0.84375f); /* t = 0.75 */
     assert_true(sc_smoothstepf(1.0f, 0.0f, 2.0f) == 0.0f);
@@ -239,7 +254,8 @@ static void smoothstep_with_reversed_or_equal_edges_is_the_formula(void **state)
     assert_true(isnan(sc_smoothstepf(1.0f, 1.0f, 1.0f)));
 }
 
-int main(void) {
+int main(void)
+{
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(radians_and_degrees_use_float_constants),
         cmocka_unit_test(abs_sign_floor_ceil_are_exact),

@@ -186,8 +186,7 @@ static void geometric_and_matrix_builtins(void **state)
     sc_value id = eval_d("m = mat4(2,1,0,0, 1,3,1,0, 0,1,4,1, 0,0,1,5); inverse(m) * m");
     for (int k = 0; k < 16; k++)
         assert_true(fabs(id.v[k] - (k % 5 == 0 ? 1.0 : 0.0)) < 1e-15);
-    assert_value(eval_d("matrixCompMult(mat2(1,2,3,4), mat2(2))"), SC_MAT2,
-                 (double[]){2, 0, 0, 8});
+    assert_value(eval_d("matrixCompMult(mat2(1,2,3,4), mat2(2))"), SC_MAT2, (double[]){2, 0, 0, 8});
     assert_value(eval_d("outerProduct(vec2(1,2), vec2(3,4))"), SC_MAT2, (double[]){3, 6, 4, 8});
 }
 
@@ -286,7 +285,8 @@ static void syntax_errors_name_the_column(void **state)
 static void type_errors_name_the_column(void **state)
 {
     (void)state;
-    assert_error("dot(vec3(1), vec2(1))", 1, "dot: arguments vec3 and vec2 must have the same type");
+    assert_error("dot(vec3(1), vec2(1))", 1,
+                 "dot: arguments vec3 and vec2 must have the same type");
     assert_error("1 + foo(2)", 5, "unknown function 'foo'");
     assert_error("x + 1", 1, "unknown variable 'x'");
     assert_error("sin + 1", 1, "'sin' is a function: expected '(' after it");
@@ -294,9 +294,12 @@ static void type_errors_name_the_column(void **state)
     assert_error("atan(1, 2, 3)", 1, "atan: expects 1 or 2 arguments, got 3");
     assert_error("sin(mat2(1))", 1, "sin: argument 1 is mat2, expected float or a vector");
     assert_error("cross(vec2(1), vec2(1))", 1, "cross: argument 1 is vec2, expected vec3");
-    assert_error("clamp(vec3(1), vec2(0), vec2(1))", 1, "clamp: argument 2 is vec2, expected float or vec3");
-    assert_error("clamp(vec3(1), 0, vec3(1))", 1, "clamp: argument 3 is vec3, expected float or vec3");
-    assert_error("refract(vec3(1), vec3(1), vec3(1))", 1, "refract: argument 3 is vec3, expected float");
+    assert_error("clamp(vec3(1), vec2(0), vec2(1))", 1,
+                 "clamp: argument 2 is vec2, expected float or vec3");
+    assert_error("clamp(vec3(1), 0, vec3(1))", 1,
+                 "clamp: argument 3 is vec3, expected float or vec3");
+    assert_error("refract(vec3(1), vec3(1), vec3(1))", 1,
+                 "refract: argument 3 is vec3, expected float");
     assert_error("determinant(vec2(1))", 1, "determinant: argument 1 is vec2, expected a matrix");
     assert_error("vec2(1) + vec3(1)", 9, "operator '+': operands vec2 and vec3 do not match");
     assert_error("mat2(1) * vec3(1)", 9, "operator '*': operands mat2 and vec3 do not match");

@@ -78,10 +78,7 @@ static int remove_dir(void **state)
 
 /* Exactly representable in binary16 and binary32 for the sizes used here: multiples of 1/2
  * below 1024 in magnitude. */
-static float pattern(int x, int y, int c)
-{
-    return 0.5f * (float)(x + 40 * y + 7 * c - 300);
-}
+static float pattern(int x, int y, int c) { return 0.5f * (float)(x + 40 * y + 7 * c - 300); }
 
 static void fill_pattern(sc_image *img)
 {
@@ -346,12 +343,9 @@ static const exr_pixel_type_t foreign_types[] = {EXR_PIXEL_FLOAT, EXR_PIXEL_UINT
 static double foreign_value(const char *name, int x, int y)
 {
     switch (name[0]) {
-    case 'C':
-        return (float)(x - 0.1 * y);
-    case 'A':
-        return 16777217.0 + 65.0 * (x + 100) + y;
-    default:
-        return 0.5 * (x + 3 * y);
+    case 'C': return (float)(x - 0.1 * y);
+    case 'A': return 16777217.0 + 65.0 * (x + 100) + y;
+    default: return 0.5 * (x + 3 * y);
     }
 }
 
@@ -361,10 +355,7 @@ static exr_attr_box2i_t box(int x0, int y0, int x1, int y1)
     return b;
 }
 
-static int element_size(exr_pixel_type_t t)
-{
-    return t == EXR_PIXEL_HALF ? 2 : 4;
-}
+static int element_size(exr_pixel_type_t t) { return t == EXR_PIXEL_HALF ? 2 : 4; }
 
 static void pack_value(unsigned char *to, exr_pixel_type_t t, double v)
 {
@@ -780,8 +771,7 @@ static void write_with_ok(const char *path, const sc_image *img, sc_pixel_type t
     char err[256] = "";
     sc_exr_options opt = {type, c, threads};
     if (sc_exr_write_with(path, img, &opt, NULL, 0, err, sizeof err) != 0)
-        fail_msg("writing %s (%s, %d threads): %s", path, sc_exr_compression_name(c), threads,
-                 err);
+        fail_msg("writing %s (%s, %d threads): %s", path, sc_exr_compression_name(c), threads, err);
 }
 
 /* Each compression is the one the file's header names (read by OpenEXR itself) and gives the
@@ -812,7 +802,8 @@ static void every_compression_round_trips(void **state)
             read_back(in_dir(0, "c.exr"), &back, NULL, NULL);
             int lossy = c == SC_EXR_PXR24 && type == SC_PIXEL_FLOAT;
             for (size_t i = 0; i < 37 * 70 * 3; i++) {
-                float want = type == SC_PIXEL_HALF ? (float)sc_round_half(img.data[i]) : img.data[i];
+                float want = type == SC_PIXEL_HALF ? (float)sc_round_half(img.data[i])
+                                                   : img.data[i];
                 double allowed = lossy ? 0x1p-15 * fabs(want) : 0.0;
                 if (!(fabs(back.data[i] - want) <= allowed))
                     fail_msg("%s %s value %zu: %a, want %a", sc_exr_compression_name(c),
@@ -855,8 +846,8 @@ static void compression_names_and_bad_options(void **state)
     (void)state;
     for (int c = 0; c < SC_EXR_COMPRESSION_COUNT; c++) {
         sc_exr_compression back;
-        assert_int_equal(sc_exr_compression_parse(sc_exr_compression_name((sc_exr_compression)c),
-                                                  &back), 0);
+        assert_int_equal(
+            sc_exr_compression_parse(sc_exr_compression_name((sc_exr_compression)c), &back), 0);
         assert_int_equal(back, c);
     }
     sc_exr_compression c;
@@ -871,8 +862,8 @@ static void compression_names_and_bad_options(void **state)
                                   {(sc_pixel_type)7, SC_EXR_ZIP, 0}};
     for (int i = 0; i < 3; i++) {
         char err[256] = "";
-        assert_int_equal(sc_exr_write_with(in_dir(0, "bad.exr"), &img, &bad[i], NULL, 0, err,
-                                           sizeof err), -1);
+        assert_int_equal(
+            sc_exr_write_with(in_dir(0, "bad.exr"), &img, &bad[i], NULL, 0, err, sizeof err), -1);
         assert_non_null(strstr(err, "invalid write options"));
     }
     assert_int_equal(entries_in_dir(), 0);
@@ -906,9 +897,8 @@ static void check_halves_of_exponent(int exponent_field)
 static void array_halves_match_the_software_rounding(void **state)
 {
     (void)state;
-    static const int exponents[] = {0,   1,   101, 102, 103, 104, 105, 106, 107, 108,
-                                    109, 110, 111, 112, 113, 114, 126, 127, 141, 142,
-                                    143, 144, 255};
+    static const int exponents[] = {0,   1,   101, 102, 103, 104, 105, 106, 107, 108, 109, 110,
+                                    111, 112, 113, 114, 126, 127, 141, 142, 143, 144, 255};
     int all = getenv("SHADECALC_EXHAUSTIVE") != NULL;
     for (int e = 0; e < (all ? 256 : (int)(sizeof exponents / sizeof exponents[0])); e++)
         check_halves_of_exponent(all ? e : exponents[e]);

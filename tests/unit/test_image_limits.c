@@ -70,7 +70,7 @@ static void long_lists_are_shortened(void **state)
     size_t len = strlen(buf);
     assert_true(len >= 200 && len <= 240);
     assert_string_equal(buf + len - 4, ",...");
-    assert_memory_equal(buf, arg, len - 4); /* a prefix of the list as given */
+    assert_memory_equal(buf, arg, len - 4);                  /* a prefix of the list as given */
     assert_true(buf[len - 5] >= '0' && buf[len - 5] <= '9'); /* ends on a whole value */
     assert_true(arg[len - 4] == ',');
     sc_sweep_var_free(&v);

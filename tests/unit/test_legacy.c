@@ -89,9 +89,9 @@ static void ref_ads(const sc_scene *s, const sc_shade_point *at, double L[3])
             S = lobe(fmax(dot3(n, h), 0.0), k->m);
         for (int c = 0; c < 3; c++) {
             double I = light->intensity[c];
-            L[c] += k->amb[c] * light->ambient[c]
-                    + att * (I * light->diffuse[c] * k->diff[c] * fmax(cos_i, 0.0)
-                             + I * light->specular[c] * k->spec[c] * S);
+            L[c] += k->amb[c] * light->ambient[c] +
+                    att * (I * light->diffuse[c] * k->diff[c] * fmax(cos_i, 0.0) +
+                           I * light->specular[c] * k->spec[c] * S);
         }
     }
 }
@@ -118,8 +118,8 @@ static void ref_fixed_function(const sc_scene *s, const sc_shade_point *at, fixe
         double spec = d3d9 || cos_i > 0.0 ? lobe(fmax(dot3(n, h), 0.0), m->brdf.m) : 0.0;
         for (int c = 0; c < 3; c++) {
             double I = light->intensity[c];
-            prim[c] += att * (m->brdf.amb[c] * I * light->ambient[c]
-                              + fmax(cos_i, 0.0) * m->brdf.diff[c] * I * light->diffuse[c]);
+            prim[c] += att * (m->brdf.amb[c] * I * light->ambient[c] +
+                              fmax(cos_i, 0.0) * m->brdf.diff[c] * I * light->diffuse[c]);
             sec[c] += att * spec * m->brdf.spec[c] * I * light->specular[c];
         }
     }

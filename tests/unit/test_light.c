@@ -251,7 +251,6 @@ static void point_on_the_light_is_finite(void **state)
     }
 }
 
-
 /* highp: 1/r² where r² overflows binary32 (r = 1e20: 1e-40, a subnormal) is not 0; clq too. */
 static void inverse_square_beyond_r2_overflow(void **state)
 {
@@ -369,7 +368,8 @@ static unsigned lcg(unsigned *s) { return (*s = *s * 1103515245u + 12345u) >> 16
 
 static double extreme(unsigned *s, sc_prec p)
 {
-    static const double v[] = {0, 1e-320, 1e-45, 1e-30, 1e-8, 1e-4, 0.5, 1, 2, 1e4, 6e4, 1e20, 3e38, 1e300};
+    static const double v[] = {0, 1e-320, 1e-45, 1e-30, 1e-8, 1e-4, 0.5,
+                               1, 2,      1e4,   6e4,   1e20, 3e38, 1e300};
     double x, lim = p == SC_HIGHP ? 3.4e38 : p == SC_MEDIUMP ? 65504 : 1e308;
     do
         x = v[lcg(s) % 14];

@@ -28,25 +28,23 @@
 #define REF_SLACK (LDBL_MANT_DIG > 53 ? 0x1p-60 : 0x1p-50)
 #define N_RANDOM 5000
 
-static double gamma_n(int n, double u) {
-    return n * u / (1.0 - n * u);
-}
-static int laplace_roundings(int n) {
-    return (n - 1) * (n + 2) / 2;
-}
+static double gamma_n(int n, double u) { return n * u / (1.0 - n * u); }
+static int laplace_roundings(int n) { return (n - 1) * (n + 2) / 2; }
 
 /* ---- deterministic random inputs (splitmix64) ------------------------------------------- */
 
 static uint64_t rng_state = 0x13198a2e03707344u;
 
-static uint64_t next_u64(void) {
+static uint64_t next_u64(void)
+{
     uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
     return z ^ (z >> 31);
 }
 
-static double uniform(double lo, double hi) {
+static double uniform(double lo, double hi)
+{
     return lo + (hi - lo) * (double)(next_u64() >> 11) * 0x1p-53;
 }
 
@@ -65,50 +63,50 @@ typedef struct {
     void (*comp_mult)(const double *, const double *, double *);
 } mat_api;
 
-static double round_float(double x) {
-    return (float)x;
-}
-static double round_double(double x) {
-    return x;
-}
+static double round_float(double x) { return (float)x; }
+static double round_double(double x) { return x; }
 
 #define TO_ARRAY_(c, k) v.c
 #define FROM_ARRAY_(c, k) p[k]
 #define ADAPT(T, V, S, N, EACH, ROUND, U)                                                          \
-    static T T##_t_load(const double *p) {                                                         \
+    static T T##_t_load(const double *p)                                                           \
+    {                                                                                              \
         T m;                                                                                       \
         for (int k = 0; k < N * N; k++)                                                            \
             m.m[k] = (S)p[k];                                                                      \
         return m;                                                                                  \
     }                                                                                              \
-    static void T##_t_store(T m, double *p) {                                                      \
+    static void T##_t_store(T m, double *p)                                                        \
+    {                                                                                              \
         for (int k = 0; k < N * N; k++)                                                            \
             p[k] = m.m[k];                                                                         \
     }                                                                                              \
-    static void T##_t_identity(double *o) {                                                        \
-        T##_t_store(T##_identity(), o);                                                            \
-    }                                                                                              \
-    static void T##_t_mul(const double *a, const double *b, double *o) {                           \
+    static void T##_t_identity(double *o) { T##_t_store(T##_identity(), o); }                      \
+    static void T##_t_mul(const double *a, const double *b, double *o)                             \
+    {                                                                                              \
         T##_t_store(T##_mul(T##_t_load(a), T##_t_load(b)), o);                                     \
     }                                                                                              \
-    static void T##_t_mul_vec(const double *m, const double *p, double *o) {                       \
+    static void T##_t_mul_vec(const double *m, const double *p, double *o)                         \
+    {                                                                                              \
         V v = T##_mul_vec(T##_t_load(m), (V){EACH(FROM_ARRAY_)});                                  \
         const double r[N] = {EACH(TO_ARRAY_)};                                                     \
         memcpy(o, r, sizeof r);                                                                    \
     }                                                                                              \
-    static void T##_t_transpose(const double *m, double *o) {                                      \
+    static void T##_t_transpose(const double *m, double *o)                                        \
+    {                                                                                              \
         T##_t_store(T##_transpose(T##_t_load(m)), o);                                              \
     }                                                                                              \
-    static double T##_t_determinant(const double *m) {                                             \
-        return T##_determinant(T##_t_load(m));                                                     \
-    }                                                                                              \
-    static int T##_t_inverse(const double *m, double *o) {                                         \
+    static double T##_t_determinant(const double *m) { return T##_determinant(T##_t_load(m)); }    \
+    static int T##_t_inverse(const double *m, double *o)                                           \
+    {                                                                                              \
         T in = T##_t_load(m), out;                                                                 \
         int rc = T##_inverse(&in, &out);                                                           \
-        if (rc == 0) T##_t_store(out, o);                                                          \
+        if (rc == 0)                                                                               \
+            T##_t_store(out, o);                                                                   \
         return rc;                                                                                 \
     }                                                                                              \
-    static void T##_t_comp_mult(const double *a, const double *b, double *o) {                     \
+    static void T##_t_comp_mult(const double *a, const double *b, double *o)                       \
+    {                                                                                              \
         T##_t_store(T##_comp_mult(T##_t_load(a), T##_t_load(b)), o);                               \
     }                                                                                              \
     static const mat_api T##_api = {N,                                                             \
@@ -134,7 +132,8 @@ static const mat_api *const apis[] = {&sc_mat2_api, &sc_mat3_api, &sc_mat4_api, 
 #define FOR_EACH_FLOAT_API(api) for (const mat_api *const *api = apis; api < apis + 3; api++)
 
 /* Entries uniform in [lo, hi], rounded to the matrix's scalar type. */
-static void random_matrix(const mat_api *api, double lo, double hi, double *m) {
+static void random_matrix(const mat_api *api, double lo, double hi, double *m)
+{
     for (int k = 0; k < api->n * api->n; k++)
         m[k] = api->round(uniform(lo, hi));
 }
@@ -142,8 +141,8 @@ static void random_matrix(const mat_api *api, double lo, double hi, double *m) {
 /* ---- long double references -------------------------------------------------------------- */
 
 /* out = a·b and mag = |a|·|b| (column-major n×n). */
-static void matmul_ref(const double *a, const double *b, int n, long double *out,
-                       long double *mag) {
+static void matmul_ref(const double *a, const double *b, int n, long double *out, long double *mag)
+{
     for (int c = 0; c < n; c++)
         for (int r = 0; r < n; r++) {
             long double s = 0, m = 0;
@@ -159,14 +158,16 @@ static void matmul_ref(const double *a, const double *b, int n, long double *out
 /* Leibniz: det = Σ_σ sgn σ·Π_c m[σ(c)][c], and the permanent of |m| (the same sum of |products|
  * without signs), over the permutations completing rows `used` from column col on. */
 static void leibniz(const double *m, int n, int col, unsigned used, long double prod, int sign,
-                    long double *det, long double *per) {
+                    long double *det, long double *per)
+{
     if (col == n) {
         *det += sign * prod;
         *per += fabsl(prod);
         return;
     }
     for (int r = 0; r < n; r++) {
-        if (used & (1u << r)) continue;
+        if (used & (1u << r))
+            continue;
         int inversions = 0;
         for (int q = r + 1; q < n; q++)
             inversions += (used >> q) & 1u;
@@ -175,24 +176,28 @@ static void leibniz(const double *m, int n, int col, unsigned used, long double 
     }
 }
 
-static long double det_ref(const double *m, int n, long double *per) {
+static long double det_ref(const double *m, int n, long double *per)
+{
     long double det = 0, p = 0;
     leibniz(m, n, 0, 0u, 1.0L, 1, &det, &p);
     *per = p;
     return det;
 }
 
-static void minor_ref(const double *m, int n, int skip_r, int skip_c, double *out) {
+static void minor_ref(const double *m, int n, int skip_r, int skip_c, double *out)
+{
     int k = 0;
     for (int c = 0; c < n; c++)
         for (int r = 0; r < n; r++)
-            if (r != skip_r && c != skip_c) out[k++] = m[c * n + r];
+            if (r != skip_r && c != skip_c)
+                out[k++] = m[c * n + r];
 }
 
 /* ---- layout --------------------------------------------------------------------------------- */
 
 /* GLSL: mat3(c0, c1, c2) * v = v.x·c0 + v.y·c1 + v.z·c2, element [col][row] = m[col·3 + row]. */
-static void matrices_are_column_major_as_glsl(void **state) {
+static void matrices_are_column_major_as_glsl(void **state)
+{
     (void)state;
     sc_mat3 m = {{1, 2, 3, /* column 0 */ 4, 5, 6, /* column 1 */ 7, 8, 10}};
     sc_vec3 x = sc_mat3_mul_vec(m, sc_vec3_make(1, 0, 0));
@@ -220,7 +225,8 @@ static void matrices_are_column_major_as_glsl(void **state) {
     assert_true(q.x == 3 && q.y == 2 && q.z == 2 && q.w == 1);
 }
 
-static void conversions_keep_the_upper_left_block(void **state) {
+static void conversions_keep_the_upper_left_block(void **state)
+{
     (void)state;
     sc_mat4 m;
     for (int k = 0; k < 16; k++)
@@ -241,7 +247,8 @@ static void conversions_keep_the_upper_left_block(void **state) {
 
 /* ---- products ------------------------------------------------------------------------------ */
 
-static void identity_is_neutral_and_transpose_an_involution(void **state) {
+static void identity_is_neutral_and_transpose_an_involution(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < 200; t++) {
@@ -263,7 +270,8 @@ static void identity_is_neutral_and_transpose_an_involution(void **state) {
 }
 
 /* Each entry of a·b (and of m·v) is a length-n dot product: within γ_n·(|a|·|b|). */
-static void products_are_within_the_dot_product_bound(void **state) {
+static void products_are_within_the_dot_product_bound(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -289,7 +297,8 @@ static void products_are_within_the_dot_product_bound(void **state) {
 
 /* fl(fl(AB)C) = ABC + E with |E| <= (2γ_n + γ_n²)|A||B||C|, and the same for A(BC), so the two
  * groupings differ by at most twice that. */
-static void multiplication_is_associative_within_rounding(void **state) {
+static void multiplication_is_associative_within_rounding(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -321,7 +330,8 @@ static void multiplication_is_associative_within_rounding(void **state) {
 }
 
 /* matrixCompMult: one rounded product per entry, so exactly the rounded double product. */
-static void comp_mult_rounds_each_product_once(void **state) {
+static void comp_mult_rounds_each_product_once(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < 500; t++) {
@@ -343,7 +353,8 @@ static void comp_mult_rounds_each_product_once(void **state) {
 
 /* Every one of the n! Laplace products carries at most k = (n−1)(n+2)/2 roundings:
  * |det − exact| <= γ_k·per(|A|), exact by Leibniz's formula. */
-static void determinant_is_within_the_laplace_bound(void **state) {
+static void determinant_is_within_the_laplace_bound(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -364,13 +375,16 @@ static void determinant_is_within_the_laplace_bound(void **state) {
  * γ_k(n−1)·per(|minor|) and E_det = γ_k(n)·per(|A|) the Laplace bounds, |X̂ − X| <= (E_cof +
  * |X|·E_det)/(|det| − E_det) plus one rounding of the quotient. */
 static double inverse_entry_bound(const double *a, int n, double u, int r, int c, long double det,
-                                  long double per, long double *exact) {
+                                  long double per, long double *exact)
+{
     double sub[9];
     long double per_minor = 1;
     minor_ref(a, n, c, r, sub);
     long double cof = n == 2 ? sub[0] : det_ref(sub, n - 1, &per_minor);
-    if (n == 2) per_minor = fabsl(cof);
-    if ((r + c) % 2) cof = -cof;
+    if (n == 2)
+        per_minor = fabsl(cof);
+    if ((r + c) % 2)
+        cof = -cof;
     *exact = cof / det;
     long double e_cof = (gamma_n(laplace_roundings(n - 1), u) + REF_SLACK) * per_minor;
     long double e_det = (gamma_n(laplace_roundings(n), u) + REF_SLACK) * per;
@@ -378,7 +392,8 @@ static double inverse_entry_bound(const double *a, int n, double u, int r, int c
     return (double)((e + u * (x + e)) * (1 + 4 * u));
 }
 
-static void inverse_is_within_its_bound_and_inverts(void **state) {
+static void inverse_is_within_its_bound_and_inverts(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -410,7 +425,8 @@ static void inverse_is_within_its_bound_and_inverts(void **state) {
                 }
                 s -= r == c;
                 assert_true(fabsl(s) <= bound * (1 + 4 * (*api)->u) + REF_SLACK * n);
-                if (t % 2) assert_true(fabsl(s) <= 64 * n * (*api)->u); /* well conditioned */
+                if (t % 2)
+                    assert_true(fabsl(s) <= 64 * n * (*api)->u); /* well conditioned */
             }
     }
 }
@@ -421,9 +437,11 @@ static void inverse_is_within_its_bound_and_inverts(void **state) {
  * accept those — but always within the rule's bound, so every one is rejected and the output is
  * left untouched.
  */
-static void singular_matrices_are_rejected(void **state) {
+static void singular_matrices_are_rejected(void **state)
+{
     (void)state;
-    FOR_EACH_API(api) {
+    FOR_EACH_API(api)
+    {
         int n = (*api)->n, nonzero_det = 0;
         double span = (*api)->u == U_FLOAT ? 0x1p11 : 0x1p40;
         for (int t = 0; t < N_RANDOM; t++) {
@@ -442,7 +460,8 @@ static void singular_matrices_are_rejected(void **state) {
             assert_int_equal((*api)->inverse(a, x), -1);
             assert_true(x[0] == 42);
         }
-        if (n > 2) assert_true(nonzero_det > 0); /* rounding did produce nonzero determinants */
+        if (n > 2)
+            assert_true(nonzero_det > 0); /* rounding did produce nonzero determinants */
     }
     sc_mat3 nan_m = sc_mat3_identity(), inf_m = sc_mat3_identity(), out;
     nan_m.m[4] = NAN;
@@ -452,7 +471,8 @@ static void singular_matrices_are_rejected(void **state) {
 }
 
 /* The rule is relative: tiny and huge but well-conditioned matrices are invertible. */
-static void scaled_matrices_are_not_singular(void **state) {
+static void scaled_matrices_are_not_singular(void **state)
+{
     (void)state;
     sc_dmat4 tiny = sc_dmat4_scale(1e-30, 2e-30, 3e-30), inv;
     assert_int_equal(sc_dmat4_inverse(&tiny, &inv), 0);
@@ -467,7 +487,8 @@ static void scaled_matrices_are_not_singular(void **state) {
 
 /* ---- the contract with shadecalc eval ------------------------------------------------------ */
 
-static void float_matrices_match_eval_highp_bit_for_bit(void **state) {
+static void float_matrices_match_eval_highp_bit_for_bit(void **state)
+{
     (void)state;
     FOR_EACH_FLOAT_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -493,23 +514,24 @@ static void float_matrices_match_eval_highp_bit_for_bit(void **state) {
 
 /* ---- transforms ---------------------------------------------------------------------------- */
 
-static sc_dvec3 apply_point(sc_dmat4 m, sc_dvec3 p) {
+static sc_dvec3 apply_point(sc_dmat4 m, sc_dvec3 p)
+{
     sc_dvec4 q = sc_dmat4_mul_vec(m, (sc_dvec4){p.x, p.y, p.z, 1.0});
     return (sc_dvec3){q.x / q.w, q.y / q.w, q.z / q.w};
 }
 
-static sc_dvec3 apply_dir(sc_dmat4 m, sc_dvec3 p) {
+static sc_dvec3 apply_dir(sc_dmat4 m, sc_dvec3 p)
+{
     sc_dvec4 q = sc_dmat4_mul_vec(m, (sc_dvec4){p.x, p.y, p.z, 0.0});
     return (sc_dvec3){q.x, q.y, q.z};
 }
 
-static double dist3(sc_dvec3 a, sc_dvec3 b) {
-    return sc_dvec3_length(sc_dvec3_sub(a, b));
-}
+static double dist3(sc_dvec3 a, sc_dvec3 b) { return sc_dvec3_length(sc_dvec3_sub(a, b)); }
 
 /* Quarter turns are exact and right-handed: z turns x into y, x turns y into z, y turns z into x.
  */
-static void quarter_turns_are_exact_and_right_handed(void **state) {
+static void quarter_turns_are_exact_and_right_handed(void **state)
+{
     (void)state;
     sc_dvec3 ex = {1, 0, 0}, ey = {0, 1, 0}, ez = {0, 0, 1};
     assert_true(dist3(apply_dir(sc_dmat4_rotate(90, 0, 0, 1), ex), ey) == 0.0);
@@ -525,12 +547,14 @@ static void quarter_turns_are_exact_and_right_handed(void **state) {
 /* For a random unit axis a and angle θ: RᵀR = I and det R = 1 (orthonormal, proper), R·a = a,
  * and a vector v ⊥ a turns by θ counterclockwise about a: cos = v·Rv/|v|², sin = a·(v × Rv)/|v|²,
  * against libm's cos and sin of θ·π/180. Tolerance 32u (a few roundings per entry). */
-static void rotations_are_orthonormal_and_turn_by_the_angle(void **state) {
+static void rotations_are_orthonormal_and_turn_by_the_angle(void **state)
+{
     (void)state;
     const double tol = 32 * U_DOUBLE, pi = 3.14159265358979323846;
     for (int t = 0; t < N_RANDOM; t++) {
         sc_dvec3 a = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-        if (sc_dvec3_length(a) < 0.1) continue;
+        if (sc_dvec3_length(a) < 0.1)
+            continue;
         double deg = uniform(-400, 400);
         sc_dmat4 r = sc_dmat4_rotate(deg, a.x, a.y, a.z);
         sc_dmat3 r3, rtr, id = sc_dmat3_identity();
@@ -557,7 +581,8 @@ static void rotations_are_orthonormal_and_turn_by_the_angle(void **state) {
 
 /* gluLookAt: the eye goes to the origin, the center onto the −z axis at its distance, up into
  * the y ≥ 0 half of the x = 0 plane; the rotation part is orthonormal. */
-static void look_at_maps_eye_center_and_up(void **state) {
+static void look_at_maps_eye_center_and_up(void **state)
+{
     (void)state;
     const double tol = 64 * U_DOUBLE;
     for (int t = 0; t < N_RANDOM; t++) {
@@ -590,7 +615,8 @@ static void look_at_maps_eye_center_and_up(void **state) {
 
 /* gluPerspective: the near plane goes to NDC z = −1, the far plane to +1, the top edge of the
  * near plane (y = near·tan(fovy/2)) to NDC y = 1 and the right edge to x = 1. */
-static void perspective_maps_the_frustum_to_the_ndc_cube(void **state) {
+static void perspective_maps_the_frustum_to_the_ndc_cube(void **state)
+{
     (void)state;
     const double tol = 64 * U_DOUBLE, pi = 3.14159265358979323846;
     for (int t = 0; t < 1000; t++) {
@@ -624,14 +650,16 @@ static void perspective_maps_the_frustum_to_the_ndc_cube(void **state) {
 /* For M = T·R·S (non-uniform S), (M3⁻¹)ᵀ = (R·S)⁻ᵀ = R·S⁻¹ (R orthogonal). And the point of
  * it: a tangent t ⊥ n stays perpendicular, (M3·t)·(N·n) = t·n = 0. For a rotation with a
  * translation it is the rotation itself (docs/formulas.md §7). */
-static void normal_matrix_is_the_inverse_transpose(void **state) {
+static void normal_matrix_is_the_inverse_transpose(void **state)
+{
     (void)state;
     const double tol = 256 * U_DOUBLE;
     for (int t = 0; t < N_RANDOM; t++) {
         double sx = uniform(0.1, 10), sy = -uniform(0.1, 10), sz = uniform(0.1, 10);
         double deg = uniform(-180, 180), ax = uniform(-1, 1), ay = uniform(-1, 1),
                az = uniform(-1, 1);
-        if (ax * ax + ay * ay + az * az < 0.01) continue;
+        if (ax * ax + ay * ay + az * az < 0.01)
+            continue;
         sc_dmat4 r = sc_dmat4_rotate(deg, ax, ay, az);
         sc_dmat4 m = sc_dmat4_mul(sc_dmat4_translate(uniform(-9, 9), 1, 2),
                                   sc_dmat4_mul(r, sc_dmat4_scale(sx, sy, sz)));
@@ -660,7 +688,8 @@ static void normal_matrix_is_the_inverse_transpose(void **state) {
     assert_int_equal(sc_dmat3_normal_matrix(&flat, &nr), -1);
 }
 
-int main(void) {
+int main(void)
+{
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(matrices_are_column_major_as_glsl),
         cmocka_unit_test(conversions_keep_the_upper_left_block),

@@ -73,9 +73,11 @@ static void special_values(void **state)
     assert_true(sc_atan2f(0.0f, -0.0f) == (float)3.14159265358979323846);
     assert_true(sc_atan2f(-0.0f, 0.0f) == 0.0f && signbit(sc_atan2f(-0.0f, 0.0f)));
     assert_true(sc_atan2f(INFINITY, -INFINITY) == (float)(3 * 3.14159265358979323846 / 4));
-    assert_true(sc_asinf(1.5f) != sc_asinf(1.5f) && sc_acosf(-1.0f) == (float)3.14159265358979323846);
+    assert_true(sc_asinf(1.5f) != sc_asinf(1.5f) &&
+                sc_acosf(-1.0f) == (float)3.14159265358979323846);
     assert_true(sc_inversesqrtf(0.0f) == INFINITY && sc_inversesqrtf(-0.0f) == -INFINITY);
-    assert_true(sc_inversesqrtf(INFINITY) == 0.0f && sc_inversesqrtf(-1.0f) != sc_inversesqrtf(-1.0f));
+    assert_true(sc_inversesqrtf(INFINITY) == 0.0f &&
+                sc_inversesqrtf(-1.0f) != sc_inversesqrtf(-1.0f));
     assert_true(sc_sqrtf(-0.0f) == 0.0f && signbit(sc_sqrtf(-0.0f)));
 }
 

@@ -32,10 +32,7 @@ static sc_mesh tessellate(const char *spec, int triangles)
     return m;
 }
 
-static const float *vertex(const sc_mesh *m, int k)
-{
-    return &m->pos[3 * k];
-}
+static const float *vertex(const sc_mesh *m, int k) { return &m->pos[3 * k]; }
 
 static void triangle_cross(const sc_mesh *m, int t, double *c)
 {
@@ -248,7 +245,8 @@ static void triangle_normal_at_extreme_scales(void **state)
         assert_true(fabs(n[0]) < 1e-15 && fabs(n[1] + 1.0 / sqrt(5.0)) < 1e-15 &&
                     fabs(n[2] - 2.0 / sqrt(5.0)) < 1e-15);
     }
-    sc_triangle_normal((double[3]){1, 0, 0}, (double[3]){1, 1e-200, 0}, (double[3]){1, 0, 1e-200}, n);
+    sc_triangle_normal((double[3]){1, 0, 0}, (double[3]){1, 1e-200, 0}, (double[3]){1, 0, 1e-200},
+                       n);
     assert_true(n[0] == 1 && n[1] == 0 && n[2] == 0);
 }
 

@@ -124,9 +124,15 @@ static void every_point_is_drawn_and_gaps_break_the_line(void **state)
         a[i] = sin(i / 5.0);
         b[i] = i == 20 ? NAN : i == 30 ? INFINITY : cos(i / 5.0);
     }
-    const sc_plot_series s[] = {{.label = "sin", .x = x, .y = a, .n = 50}, {.label = "cos & <gaps>", .x = x, .y = b, .n = 50}};
-    sc_plot p = {.title = "a \"title\"", .xlabel = "x", .ylabel = "y", .ymin = NAN,
-                 .ymax = NAN, .series = s, .n_series = 2};
+    const sc_plot_series s[] = {{.label = "sin", .x = x, .y = a, .n = 50},
+                                {.label = "cos & <gaps>", .x = x, .y = b, .n = 50}};
+    sc_plot p = {.title = "a \"title\"",
+                 .xlabel = "x",
+                 .ylabel = "y",
+                 .ymin = NAN,
+                 .ymax = NAN,
+                 .series = s,
+                 .n_series = 2};
     char *text = write_to_text(&p);
     assert_int_equal(count(text, "class=\"series\""), 2);
     assert_int_equal(points_of(text, "sin"), 50);
@@ -173,7 +179,8 @@ static void polar_points_lie_on_a_circle(void **state)
         pts = end;
     }
     /* θ = 0 is straight up from the centre, θ = 80° at R sin 80° to its right */
-    double cx = px[8], radius = (px[16] - cx) / sin(80.0 * 0.017453292519943295), cy = py[8] + radius;
+    double cx = px[8], radius = (px[16] - cx) / sin(80.0 * 0.017453292519943295),
+           cy = py[8] + radius;
     assert_true(radius > 50.0);
     for (int i = 0; i < 17; i++) {
         double d = hypot(px[i] - cx, py[i] - cy);
@@ -241,8 +248,10 @@ static void coinciding_curves_have_distinct_styles(void **state)
     const char *g = text;
     for (int k = 0; k < 6; k++) {
         g = strstr(g + 1, "class=\"series\"");
-        const char *stroke = strstr(g, "stroke=\"") + 8, *dash = strstr(g, "stroke-dasharray=\"") + 18;
-        snprintf(seen[k], sizeof seen[k], "%.7s|%.*s", stroke, (int)(strchr(dash, '"') - dash), dash);
+        const char *stroke = strstr(g, "stroke=\"") + 8,
+                   *dash = strstr(g, "stroke-dasharray=\"") + 18;
+        snprintf(seen[k], sizeof seen[k], "%.7s|%.*s", stroke, (int)(strchr(dash, '"') - dash),
+                 dash);
         for (int j = 0; j < k; j++)
             if (strcmp(seen[j], seen[k]) == 0)
                 fail_msg("curves %d and %d share the style %s", j, k, seen[k]);
@@ -267,7 +276,7 @@ static void long_legend_is_not_clipped(void **state)
     assert_non_null(legend);
     double lx = attr(legend, "x"), lw = attr(legend, "width"), ly = attr(legend, "y");
     assert_true(lx >= 0.0 && lx + lw <= width);
-    assert_true(lw >= 200 * 6.0);  /* room for every character */
+    assert_true(lw >= 200 * 6.0); /* room for every character */
     assert_true(ly + attr(legend, "height") <= height);
     free(text);
 }
@@ -290,8 +299,13 @@ static void reference_line_is_drawn_inside_the_range(void **state)
     (void)state;
     const double x[] = {0, 1}, y[] = {0, 2};
     const sc_plot_series s[] = {{.x = x, .y = y, .n = 2}};
-    sc_plot p = {.ymin = NAN, .ymax = NAN, .series = s, .n_series = 1, .has_reference = 1,
-                 .reference_y = 1.0, .reference_label = "a = 1"};
+    sc_plot p = {.ymin = NAN,
+                 .ymax = NAN,
+                 .series = s,
+                 .n_series = 1,
+                 .has_reference = 1,
+                 .reference_y = 1.0,
+                 .reference_label = "a = 1"};
     char *text = write_to_text(&p);
     assert_non_null(strstr(text, "class=\"reference\""));
     assert_non_null(strstr(text, ">a = 1</text>"));
@@ -335,16 +349,16 @@ static void heatmap_cells_grow_upward(void **state)
     (void)state;
     const double x[] = {0, 1, 2}, y[] = {0, 10};
     const double v[] = {0, 1, 2, 3, 4, 5}; /* v[j·3 + i] */
-    sc_heatmap h = {.x = x, .y = y, .nx = 3, .ny = 2, .values = v, .tone = SC_TONE_LINEAR,
-                    .value_label = "f"};
+    sc_heatmap h = {
+        .x = x, .y = y, .nx = 3, .ny = 2, .values = v, .tone = SC_TONE_LINEAR, .value_label = "f"};
     char *text = heatmap_text(&h);
     const char *cells = strstr(text, "class=\"cells\"");
     assert_int_equal(count(cells, "<rect") - count(strstr(cells, "</g>"), "<rect"), 6);
     const char *first = strstr(cells, "<rect"), *fourth = first;
     for (int k = 0; k < 3; k++)
         fourth = strstr(fourth + 1, "<rect");
-    assert_true(attr(first, "y") > attr(fourth, "y")); /* y[0] below y[1] */
-    assert_non_null(strstr(first, "fill=\"#440154\""));     /* 0: viridis' first colour */
+    assert_true(attr(first, "y") > attr(fourth, "y"));       /* y[0] below y[1] */
+    assert_non_null(strstr(first, "fill=\"#440154\""));      /* 0: viridis' first colour */
     assert_non_null(strstr(fourth + 1, "fill=\"#fde725\"")); /* 5 is the top */
     free(text);
 }

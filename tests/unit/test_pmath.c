@@ -130,7 +130,6 @@ static void faceforward_flips_toward_the_viewer(void **state)
     assert_true(r[2] == -1);
 }
 
-
 /* The stated bounds of the geometric functions (man page, ACCURACY), on random vectors:
  * |dot_highp − dot| <= γ_n Σ|a_i b_i| with γ_n = n·u/(1 − n·u), u = 2^-24 (Higham, Accuracy and
  * Stability of Numerical Algorithms, §3.1); normalize within (n + 2)·u relative per component

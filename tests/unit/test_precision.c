@@ -17,8 +17,8 @@ static void half_exact_values_round_trip(void **state)
     assert_int_equal(sc_half_from_double(1.0), 0x3c00);
     assert_int_equal(sc_half_from_double(-2.0), 0xc000);
     assert_int_equal(sc_half_from_double(65504.0), 0x7bff);
-    assert_int_equal(sc_half_from_double(0x1p-14), 0x0400);  /* smallest normal */
-    assert_int_equal(sc_half_from_double(0x1p-24), 0x0001);  /* smallest subnormal */
+    assert_int_equal(sc_half_from_double(0x1p-14), 0x0400);   /* smallest normal */
+    assert_int_equal(sc_half_from_double(0x1p-24), 0x0001);   /* smallest subnormal */
     assert_int_equal(sc_half_from_double(0x3ffp-24), 0x03ff); /* largest subnormal */
     assert_int_equal(sc_half_from_double(-0.0), 0x8000);
     for (uint32_t h = 0; h < 0x10000; h++) {
@@ -62,7 +62,7 @@ static void lowp_is_fixed_point_with_saturation(void **state)
 {
     (void)state;
     assert_true(sc_round_lowp(0.5) == 0.5);
-    assert_true(sc_round_lowp(1.0 / 512.0) == 0.0);       /* tie to even: 0 */
+    assert_true(sc_round_lowp(1.0 / 512.0) == 0.0);         /* tie to even: 0 */
     assert_true(sc_round_lowp(3.0 / 512.0) == 4.0 / 512.0); /* tie to even: 2/256 */
     assert_true(sc_round_lowp(0.3) == 77.0 / 256.0);
     assert_true(sc_round_lowp(5.0) == SC_LOWP_MAX);

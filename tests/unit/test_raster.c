@@ -158,8 +158,8 @@ static void draw_closed_mesh(const double (*pos)[3], const int (*tri)[3], int n_
     }
 }
 
-static const double octa_pos[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+static const double octa_pos[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
 static const int octa_tri[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
 
@@ -264,8 +264,8 @@ static void interpolation_at_vertices(void **state)
 
 /* Reference: the ray from the eye through the pixel centre meets the triangle's plane at X;
  * its barycentrics are the ratios of the sub-triangle areas (double, no 1/w formula). */
-static void ray_barycentrics(const render_view *view, int size, int x, int y,
-                             const double p[3][3], double b[3])
+static void ray_barycentrics(const render_view *view, int size, int x, int y, const double p[3][3],
+                             double b[3])
 {
     double ndc_x = 2.0 * (x + 0.5) / size - 1.0, ndc_y = 1.0 - 2.0 * (y + 0.5) / size;
     double d[3], e1[3], e2[3], n[3], dn = 0.0, pn = 0.0;
@@ -390,9 +390,8 @@ static void huge_triangle_covers_screen_once(void **state)
 {
     (void)state;
     enum { S = 16 };
-    raster_vertex v[3] = {{-1e7, -1e7, 1, {1, 0, 0}},
-                          {3e7, -1e7, 1, {0, 1, 0}},
-                          {-1e7, 3e7, 1, {0, 0, 1}}};
+    raster_vertex v[3] = {
+        {-1e7, -1e7, 1, {1, 0, 0}}, {3e7, -1e7, 1, {0, 1, 0}}, {-1e7, 3e7, 1, {0, 0, 1}}};
     int count[S * S] = {0};
     raster_tri t;
     assert_true(clip_and_cover(v, S, count, &t) > 0);
@@ -424,7 +423,8 @@ static void non_finite_or_behind_is_dropped(void **state)
     (void)state;
     raster_vertex poly[RASTER_CLIP_MAX];
     raster_vertex nan_v[3] = {{NAN, 0, 1, {1, 0, 0}}, {1, 0, 1, {0, 1, 0}}, {0, 1, 1, {0, 0, 1}}};
-    raster_vertex inf_v[3] = {{0, 0, INFINITY, {1, 0, 0}}, {1, 0, 1, {0, 1, 0}}, {0, 1, 1, {0, 0, 1}}};
+    raster_vertex inf_v[3] = {
+        {0, 0, INFINITY, {1, 0, 0}}, {1, 0, 1, {0, 1, 0}}, {0, 1, 1, {0, 0, 1}}};
     raster_vertex behind[3] = {{0, 0, -1, {1, 0, 0}}, {1, 0, -2, {0, 1, 0}}, {0, 1, -1, {0, 0, 1}}};
     assert_int_equal(raster_clip(nan_v, 1e-3, 100, poly), 0);
     assert_int_equal(raster_clip(inf_v, 1e-3, 100, poly), 0);

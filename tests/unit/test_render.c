@@ -59,12 +59,17 @@ static void make_scene(scene_box *b, const char *light, const char *model)
 
 static const sc_camera above = {{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40};
 
-static void render_ok(const sc_mesh *m, const sc_surface *s, const sc_scene *scene,
-                      sc_shading mode, const sc_camera *cam, int threads, sc_framebuffer *fb)
+static void render_ok(const sc_mesh *m, const sc_surface *s, const sc_scene *scene, sc_shading mode,
+                      const sc_camera *cam, int threads, sc_framebuffer *fb)
 {
     char err[256];
-    sc_render_params p = {.mesh = m, .surface = s, .scene = scene, .prec = SC_DOUBLE,
-                          .shading = mode, .camera = *cam, .threads = threads};
+    sc_render_params p = {.mesh = m,
+                          .surface = s,
+                          .scene = scene,
+                          .prec = SC_DOUBLE,
+                          .shading = mode,
+                          .camera = *cam,
+                          .threads = threads};
     if (sc_render(&p, fb, err, sizeof err) < 0)
         fail_msg("sc_render: %s", err);
 }
@@ -257,9 +262,12 @@ static void batch_kernel_matches_sc_shade(void **state)
     char err[256];
     sc_light lights[3];
     assert_int_equal(sc_light_parse("point pos=2,-3,3 I=20", &lights[0], err, sizeof err), 0);
-    assert_int_equal(sc_light_parse("directional dir=-1,-1,1 E=0.5", &lights[1], err, sizeof err), 0);
-    assert_int_equal(sc_light_parse("spot pos=0,-4,0 dir=0,1,0 I=30 spot=directx inner=10 outer=20 exp=2",
-                                    &lights[2], err, sizeof err), 0);
+    assert_int_equal(sc_light_parse("directional dir=-1,-1,1 E=0.5", &lights[1], err, sizeof err),
+                     0);
+    assert_int_equal(
+        sc_light_parse("spot pos=0,-4,0 dir=0,1,0 I=30 spot=directx inner=10 outer=20 exp=2",
+                       &lights[2], err, sizeof err),
+        0);
     for (size_t k = 0; k < sizeof models / sizeof models[0]; k++) {
         sc_scene scene = {lights, 3, {0}, {0.1, 0.1, 0.1}};
         assert_int_equal(sc_model_parse(models[k], &scene.model, err, sizeof err), 0);
@@ -272,8 +280,13 @@ static void batch_kernel_matches_sc_shade(void **state)
         sc_framebuffer ref, fast;
         assert_int_equal(sc_framebuffer_init(&ref, S, S), 0);
         assert_int_equal(sc_framebuffer_init(&fast, S, S), 0);
-        sc_render_params p = {.mesh = &m, .surface = s, .scene = &scene, .prec = SC_DOUBLE,
-                              .shading = SC_SHADING_PHONG, .camera = side_view, .threads = 1};
+        sc_render_params p = {.mesh = &m,
+                              .surface = s,
+                              .scene = &scene,
+                              .prec = SC_DOUBLE,
+                              .shading = SC_SHADING_PHONG,
+                              .camera = side_view,
+                              .threads = 1};
         assert_int_equal(sc_render(&p, &ref, err, sizeof err), 0);
         p.prec = SC_HIGHP;
         assert_int_equal(sc_render(&p, &fast, err, sizeof err), 0);
@@ -299,8 +312,10 @@ static void other_scenes_keep_sc_shade(void **state)
     static const struct {
         const char *light, *model, *why;
     } cases[] = {
-        {"spot pos=0,0,3 dir=0,0,-1 I=5 atten=window rstart=1 rend=9", "lambert", "light 1: the kernel's falloff"},
-        {"point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01", "lambert", "light 1: the kernel's falloff"},
+        {"spot pos=0,0,3 dir=0,0,-1 I=5 atten=window rstart=1 rend=9", "lambert",
+         "light 1: the kernel's falloff"},
+        {"point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01", "lambert",
+         "light 1: the kernel's falloff"},
         {"point pos=0,0,3 I=5", "phong m=20", "brdf phong"},
         {"point pos=0,0,3 I=5", "blinn-phong form=plain", "form=normalized only"},
         {"point pos=0,0,3 I=5", "cook-torrance D=beckmann", "D=ggx"},
@@ -342,8 +357,13 @@ static void render_tiers_within_their_bounds(void **state)
     make_scene(&b, "point pos=2,-3,3 I=20", "cook-torrance alpha=0.3 f0=0.04");
     sc_framebuffer ref, img[3];
     assert_int_equal(sc_framebuffer_init(&ref, S, S), 0);
-    sc_render_params p = {.mesh = &m, .surface = s, .scene = &b.scene, .prec = SC_DOUBLE,
-                          .shading = SC_SHADING_PHONG, .camera = side_view, .threads = 1};
+    sc_render_params p = {.mesh = &m,
+                          .surface = s,
+                          .scene = &b.scene,
+                          .prec = SC_DOUBLE,
+                          .shading = SC_SHADING_PHONG,
+                          .camera = side_view,
+                          .threads = 1};
     assert_int_equal(sc_render(&p, &ref, err, sizeof err), 0);
     double peak = 0.0;
     for (int i = 0; i < 4 * S * S; i++)
@@ -355,8 +375,8 @@ static void render_tiers_within_their_bounds(void **state)
         assert_int_equal(sc_render(&p, &img[t], err, sizeof err), 0);
         double worst = 0.0;
         for (int i = 0; i < 4 * S * S; i++)
-            worst = fmax(worst, fabs(img[t].rgba[i] - ref.rgba[i]) /
-                                    (fabs(ref.rgba[i]) + 1e-3 * peak));
+            worst = fmax(worst,
+                         fabs(img[t].rgba[i] - ref.rgba[i]) / (fabs(ref.rgba[i]) + 1e-3 * peak));
         if (worst > 2.0 * tiers[t].bound + 1e-5) /* plus the float rounding of the inputs */
             fail_msg("tier %s: relative error %g over its bound %g", tiers[t].tier, worst,
                      tiers[t].bound);
@@ -564,8 +584,11 @@ static void invalid_inputs_fail_cleanly(void **state)
     make_scene(&b, "directional dir=0,0,1", "lambert");
     sc_framebuffer fb;
     assert_int_equal(sc_framebuffer_init(&fb, 8, 8), 0);
-    sc_render_params p = {.mesh = &q.mesh, .scene = &b.scene, .shading = SC_SHADING_EXACT,
-                          .camera = above, .threads = 1};
+    sc_render_params p = {.mesh = &q.mesh,
+                          .scene = &b.scene,
+                          .shading = SC_SHADING_EXACT,
+                          .camera = above,
+                          .threads = 1};
     assert_int_equal(sc_render(&p, &fb, err, sizeof err), -1);
     assert_non_null(strstr(err, "exact"));
     sc_mesh no_normals = q.mesh;

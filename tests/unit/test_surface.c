@@ -210,7 +210,8 @@ static void extreme_sizes_keep_the_closed_form_normal(void **state)
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         sc_surface *s = parse(cases[i].spec);
         sc_surface_point q;
-        FOR_GRID(u, v) {
+        FOR_GRID(u, v)
+        {
             sc_surface_eval(s, u, v, &q);
             assert_int_equal(q.degenerate, 0);
             assert_vec_near(q.n, cases[i].unit(u, v).n, NORMAL_TOL, cases[i].spec);

@@ -109,11 +109,15 @@ static void list_keeps_its_order(void **state)
 static void bad_variables_are_named(void **state)
 {
     (void)state;
-    static const char *const bad[] = {
-        "x",         "=1:2:3",    "1x=1:2:3", "x=1:2",   "x=1:2:3:4", "x=a:2:3", "x=1:2:0",
-        "x=1:2:-1",  "x=1:2:1.5", "x=1,,2",   "x=",      "x=1,b",     "x=inf:1:2",
-        "x=1:nan:2", "x y=1",     "x=1:2:99999999999999999999", "x= 1:2:3",
-        "a_very_long_name_of_more_than_31_chars=1"};
+    static const char *const bad[] = {"x",         "=1:2:3",
+                                      "1x=1:2:3",  "x=1:2",
+                                      "x=1:2:3:4", "x=a:2:3",
+                                      "x=1:2:0",   "x=1:2:-1",
+                                      "x=1:2:1.5", "x=1,,2",
+                                      "x=",        "x=1,b",
+                                      "x=inf:1:2", "x=1:nan:2",
+                                      "x y=1",     "x=1:2:99999999999999999999",
+                                      "x= 1:2:3",  "a_very_long_name_of_more_than_31_chars=1"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         sc_sweep_var v;
         if (sc_sweep_var_parse(bad[i], &v, err, sizeof err) == 0)
@@ -248,7 +252,7 @@ static void header_lists_the_columns(void **state)
 typedef struct {
     uint64_t next_row; /* consume must see rows in order */
     int out_of_order;
-    double fail_at;  /* eval fails when x equals this */
+    double fail_at; /* eval fails when x equals this */
 } runner_state;
 
 static int eval_poly(void *user, int worker, const double *vars, double *results, char *e,
@@ -270,8 +274,7 @@ static int consume_in_order(void *user, uint64_t row, const double *vars, const 
     (void)e;
     (void)size;
     runner_state *s = user;
-    s->out_of_order |= row != s->next_row++ ||
-                       results[0] != vars[0] * vars[0] + 3.0 * vars[1];
+    s->out_of_order |= row != s->next_row++ || results[0] != vars[0] * vars[0] + 3.0 * vars[1];
     return 0;
 }
 

@@ -17,9 +17,9 @@ static void edit_distance_counts_each_edit_once(void **state)
     assert_int_equal(sc_edit_distance("", "abc"), 3);
     assert_int_equal(sc_edit_distance("abc", "abc"), 0);
     assert_int_equal(sc_edit_distance("precison", "precision"), 1);
-    assert_int_equal(sc_edit_distance("ab", "ba"), 1);        /* a transposition */
+    assert_int_equal(sc_edit_distance("ab", "ba"), 1); /* a transposition */
     assert_int_equal(sc_edit_distance("normalise", "normalize"), 1);
-    assert_int_equal(sc_edit_distance("ca", "abc"), 3);       /* OSA, not Damerau: 3, not 2 */
+    assert_int_equal(sc_edit_distance("ca", "abc"), 3); /* OSA, not Damerau: 3, not 2 */
 }
 
 static void edit_distance_of_long_words_is_far(void **state)
@@ -68,12 +68,12 @@ static void escape_writes_control_bytes_and_bad_utf8_as_hex(void **state)
 {
     (void)state;
     assert_string_equal(escaped("a\tb\nc\x1b[0m\x7f", 256), "a\\x09b\\x0ac\\x1b[0m\\x7f");
-    assert_string_equal(escaped("\xff\xc3", 256), "\\xff\\xc3");        /* bad lead, truncated */
-    assert_string_equal(escaped("\xc0\xaf", 256), "\\xc0\\xaf");        /* overlong '/' */
+    assert_string_equal(escaped("\xff\xc3", 256), "\\xff\\xc3");          /* bad lead, truncated */
+    assert_string_equal(escaped("\xc0\xaf", 256), "\\xc0\\xaf");          /* overlong '/' */
     assert_string_equal(escaped("\xe0\x80\xaf", 256), "\\xe0\\x80\\xaf"); /* overlong, 3 bytes */
     assert_string_equal(escaped("\xed\xa0\x80", 256), "\\xed\\xa0\\x80"); /* a surrogate */
     assert_string_equal(escaped("\xf4\x90\x80\x80", 256), "\\xf4\\x90\\x80\\x80"); /* > U+10FFFF */
-    assert_string_equal(escaped("\xe2\x82", 256), "\\xe2\\x82");        /* cut sequence */
+    assert_string_equal(escaped("\xe2\x82", 256), "\\xe2\\x82"); /* cut sequence */
 }
 
 static void escaping_twice_changes_nothing(void **state)

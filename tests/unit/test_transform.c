@@ -24,10 +24,7 @@ static sc_dmat4 parse(const char *spec)
 }
 
 /* Element (row r, column c) of a column-major 4×4. */
-static double at(const sc_dmat4 *m, int r, int c)
-{
-    return m->m[4 * c + r];
-}
+static double at(const sc_dmat4 *m, int r, int c) { return m->m[4 * c + r]; }
 
 static void assert_rows(const sc_dmat4 *m, const double want[4][4], double tol)
 {

@@ -23,29 +23,34 @@ static const double pi = 3.14159265358979323846;
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
 
 /* xorshift64*: a fixed sequence, so a failure reproduces. */
-static uint32_t random_u32(void) {
+static uint32_t random_u32(void)
+{
     rng_state ^= rng_state >> 12;
     rng_state ^= rng_state << 25;
     rng_state ^= rng_state >> 27;
     return (uint32_t)((rng_state * 0x2545f4914f6cdd1du) >> 32);
 }
 
-static float float_of_bits(uint32_t bits) {
+static float float_of_bits(uint32_t bits)
+{
     float f;
     memcpy(&f, &bits, sizeof f);
     return f;
 }
 
 /* A random finite binary32 with |x| <= limit, every exponent equally likely. */
-static float random_float(float limit) {
+static float random_float(float limit)
+{
     for (;;) {
         float x = float_of_bits(random_u32());
-        if (fabsf(x) <= limit) return x;
+        if (fabsf(x) <= limit)
+            return x;
     }
 }
 
 /* Fails with the input when got is not within `bound` ULPs of the double reference. */
-static void assert_within_ulps(const char *fn, float x, float got, double ref, double bound) {
+static void assert_within_ulps(const char *fn, float x, float got, double ref, double bound)
+{
     double err = sc_ulp_error(SC_HIGHP, (double)got, ref);
     if (!(err <= bound))
         fail_msg("%s(%a) = %a, reference %a: %.3f ULP > %.1f", fn, (double)x, (double)got, ref, err,
@@ -55,23 +60,21 @@ static void assert_within_ulps(const char *fn, float x, float got, double ref, d
 typedef float (*unary_f)(float);
 typedef double (*unary_d)(double);
 
-static void check_random_unary(const char *fn, unary_f f, unary_d ref, float limit, int count) {
+static void check_random_unary(const char *fn, unary_f f, unary_d ref, float limit, int count)
+{
     for (int i = 0; i < count; i++) {
         float x = random_float(limit);
         assert_within_ulps(fn, x, f(x), ref((double)x), 1.0);
     }
 }
 
-static void assert_negative_zero(float x) {
-    assert_true(x == 0.0f && signbit(x));
-}
-static void assert_positive_zero(float x) {
-    assert_true(x == 0.0f && !signbit(x));
-}
+static void assert_negative_zero(float x) { assert_true(x == 0.0f && signbit(x)); }
+static void assert_positive_zero(float x) { assert_true(x == 0.0f && !signbit(x)); }
 
 /* ---- sin, cos, tan ---------------------------------------------------------------------- */
 
-static void sin_cos_tan_of_signed_zero(void **state) {
+static void sin_cos_tan_of_signed_zero(void **state)
+{
     (void)state;
     assert_positive_zero(sc_sinf(0.0f));
     assert_negative_zero(sc_sinf(-0.0f));
@@ -80,7 +83,8 @@ static void sin_cos_tan_of_signed_zero(void **state) {
     assert_true(sc_cosf(0.0f) == 1.0f && sc_cosf(-0.0f) == 1.0f);
 }
 
-static void sin_cos_tan_of_infinity_and_nan_are_nan(void **state) {
+static void sin_cos_tan_of_infinity_and_nan_are_nan(void **state)
+{
     (void)state;
     const float inputs[3] = {INFINITY, -INFINITY, NAN};
     for (int i = 0; i < 3; i++) {
@@ -90,7 +94,8 @@ static void sin_cos_tan_of_infinity_and_nan_are_nan(void **state) {
     }
 }
 
-static void sin_of_tiny_x_is_x(void **state) {
+static void sin_of_tiny_x_is_x(void **state)
+{
     (void)state;
     const float tiny[4] = {FLT_MIN, -FLT_MIN, 0x1p-149f, 0x1p-20f};
     for (int i = 0; i < 4; i++) {
@@ -100,7 +105,8 @@ static void sin_of_tiny_x_is_x(void **state) {
     }
 }
 
-static void sin_cos_tan_match_libm_on_a_grid_to_1e4(void **state) {
+static void sin_cos_tan_match_libm_on_a_grid_to_1e4(void **state)
+{
     (void)state;
     for (float x = -1e4f; x <= 1e4f; x += 0.0625f + fabsf(x) * 0x1p-12f) {
         assert_within_ulps("sin", x, sc_sinf(x), sin((double)x), 1.0);
@@ -109,7 +115,8 @@ static void sin_cos_tan_match_libm_on_a_grid_to_1e4(void **state) {
     }
 }
 
-static void sin_cos_tan_match_libm_for_random_x_to_1e4(void **state) {
+static void sin_cos_tan_match_libm_for_random_x_to_1e4(void **state)
+{
     (void)state;
     check_random_unary("sin", sc_sinf, sin, 1e4f, 100000);
     check_random_unary("cos", sc_cosf, cos, 1e4f, 100000);
@@ -117,7 +124,8 @@ static void sin_cos_tan_match_libm_for_random_x_to_1e4(void **state) {
 }
 
 /* Beyond the Cody–Waite range (2^19·π/2) the Payne–Hanek reduction takes over. */
-static void sin_cos_tan_match_libm_for_every_finite_magnitude(void **state) {
+static void sin_cos_tan_match_libm_for_every_finite_magnitude(void **state)
+{
     (void)state;
     check_random_unary("sin", sc_sinf, sin, FLT_MAX, 100000);
     check_random_unary("cos", sc_cosf, cos, FLT_MAX, 100000);
@@ -132,7 +140,8 @@ static void sin_cos_tan_match_libm_for_every_finite_magnitude(void **state) {
 
 /* The floats nearest k·π/2 leave the smallest remainders r, where an inexact reduction shows;
  * tan has its poles there. k runs through small values and through powers of 2 up to 2^120. */
-static void check_near_multiple_of_half_pi(double multiple) {
+static void check_near_multiple_of_half_pi(double multiple)
+{
     float x = (float)multiple;
     float around[3] = {nextafterf(x, -INFINITY), x, nextafterf(x, INFINITY)};
     for (int i = 0; i < 3; i++) {
@@ -143,7 +152,8 @@ static void check_near_multiple_of_half_pi(double multiple) {
     }
 }
 
-static void reduction_is_exact_near_multiples_of_half_pi(void **state) {
+static void reduction_is_exact_near_multiples_of_half_pi(void **state)
+{
     (void)state;
     for (int k = -20000; k <= 20000; k++)
         check_near_multiple_of_half_pi(k * (pi / 2));
@@ -152,7 +162,8 @@ static void reduction_is_exact_near_multiples_of_half_pi(void **state) {
             check_near_multiple_of_half_pi(ldexp(k * (pi / 2), e));
 }
 
-static void known_values_of_sin_cos_tan(void **state) {
+static void known_values_of_sin_cos_tan(void **state)
+{
     (void)state;
     const float pi_f = (float)pi; /* π − 8.74e-8: sin(π_f) is that difference */
     assert_within_ulps("sin", pi_f, sc_sinf(pi_f), pi - (double)pi_f, 1.0);
@@ -164,7 +175,8 @@ static void known_values_of_sin_cos_tan(void **state) {
 
 /* ---- atan, atan2 ------------------------------------------------------------------------ */
 
-static void atan_special_values(void **state) {
+static void atan_special_values(void **state)
+{
     (void)state;
     assert_positive_zero(sc_atanf(0.0f));
     assert_negative_zero(sc_atanf(-0.0f));
@@ -175,21 +187,24 @@ static void atan_special_values(void **state) {
     assert_true(sc_atanf(0x1p-140f) == 0x1p-140f);
 }
 
-static void atan_matches_libm(void **state) {
+static void atan_matches_libm(void **state)
+{
     (void)state;
     check_random_unary("atan", sc_atanf, atan, FLT_MAX, 200000);
     for (float x = -4.0f; x <= 4.0f; x += 0x1p-10f)
         assert_within_ulps("atan", x, sc_atanf(x), atan((double)x), 1.0);
 }
 
-static void check_atan2_equals_annex_f(float y, float x) {
+static void check_atan2_equals_annex_f(float y, float x)
+{
     float got = sc_atan2f(y, x), want = (float)atan2((double)y, (double)x);
     if (!(got == want && signbit(got) == signbit(want)))
         fail_msg("atan2(%a, %a) = %a, C99 Annex F gives %a", (double)y, (double)x, (double)got,
                  (double)want);
 }
 
-static void atan2_signs_place_every_quadrant(void **state) {
+static void atan2_signs_place_every_quadrant(void **state)
+{
     (void)state;
     assert_true(sc_atan2f(1.0f, 1.0f) == (float)(pi / 4));
     assert_true(sc_atan2f(1.0f, -1.0f) == (float)(3 * pi / 4));
@@ -202,7 +217,8 @@ static void atan2_signs_place_every_quadrant(void **state) {
 
 /* C99 Annex F.9.1.4, every signed zero and infinity against every class of the other
  * argument. atan2(±0, ±0), undefined in GLSL ES, gives Annex F's ±0 and ±π. */
-static void atan2_special_cases_follow_c99_annex_f(void **state) {
+static void atan2_special_cases_follow_c99_annex_f(void **state)
+{
     (void)state;
     const float v[] = {0.0f, -0.0f, 1.5f, -1.5f, 0x1p-149f, FLT_MAX, INFINITY, -INFINITY};
     const int n = (int)(sizeof v / sizeof v[0]);
@@ -216,7 +232,8 @@ static void atan2_special_cases_follow_c99_annex_f(void **state) {
     assert_true(isnan(sc_atan2f(NAN, 1.0f)) && isnan(sc_atan2f(1.0f, NAN)));
 }
 
-static void atan2_matches_libm_on_random_pairs(void **state) {
+static void atan2_matches_libm_on_random_pairs(void **state)
+{
     (void)state;
     for (int i = 0; i < 200000; i++) {
         float y = random_float(FLT_MAX), x = random_float(FLT_MAX);
@@ -231,7 +248,8 @@ static void atan2_matches_libm_on_random_pairs(void **state) {
 
 /* ---- asin, acos ------------------------------------------------------------------------- */
 
-static void asin_acos_special_values(void **state) {
+static void asin_acos_special_values(void **state)
+{
     (void)state;
     assert_positive_zero(sc_asinf(0.0f));
     assert_negative_zero(sc_asinf(-0.0f));
@@ -244,7 +262,8 @@ static void asin_acos_special_values(void **state) {
 }
 
 /* GLSL ES leaves |x| > 1 undefined; we return NaN, as the IEEE formula does. */
-static void asin_acos_outside_unit_interval_are_nan(void **state) {
+static void asin_acos_outside_unit_interval_are_nan(void **state)
+{
     (void)state;
     const float outside[6] = {1.5f, -1.5f, 0x1.000002p0f, -0x1.000002p0f, INFINITY, NAN};
     for (int i = 0; i < 6; i++) {
@@ -253,7 +272,8 @@ static void asin_acos_outside_unit_interval_are_nan(void **state) {
     }
 }
 
-static void asin_acos_match_libm(void **state) {
+static void asin_acos_match_libm(void **state)
+{
     (void)state;
     check_random_unary("asin", sc_asinf, asin, 1.0f, 200000);
     check_random_unary("acos", sc_acosf, acos, 1.0f, 200000);
@@ -269,7 +289,8 @@ static void asin_acos_match_libm(void **state) {
 
 /* ---- sqrt, inversesqrt ------------------------------------------------------------------ */
 
-static void sqrt_special_values(void **state) {
+static void sqrt_special_values(void **state)
+{
     (void)state;
     assert_positive_zero(sc_sqrtf(0.0f));
     assert_negative_zero(sc_sqrtf(-0.0f)); /* IEEE 754: sqrt(−0) = −0 */
@@ -279,7 +300,8 @@ static void sqrt_special_values(void **state) {
 }
 
 /* libm's sqrtf is correctly rounded (IEEE 754 requires it), so equality is the check. */
-static void sqrt_is_correctly_rounded(void **state) {
+static void sqrt_is_correctly_rounded(void **state)
+{
     (void)state;
     for (int i = 0; i < 300000; i++) {
         float x = fabsf(random_float(FLT_MAX));
@@ -292,7 +314,8 @@ static void sqrt_is_correctly_rounded(void **state) {
 }
 
 /* GLSL ES leaves x <= 0 undefined; we return the IEEE 1/√x. */
-static void inversesqrt_special_values(void **state) {
+static void inversesqrt_special_values(void **state)
+{
     (void)state;
     assert_true(sc_inversesqrtf(0.0f) == INFINITY);
     assert_true(sc_inversesqrtf(-0.0f) == -INFINITY);
@@ -306,11 +329,13 @@ static void inversesqrt_special_values(void **state) {
 /* Within 1 ULP means the exact 1/√x lies strictly between the float neighbours of the result:
  * lo²·x < 1 < hi²·x. lo² and hi² are exact in double, the product is rounded by 2^-53, far
  * less than the distance of either side from 1 (about 2^-23). */
-static void inversesqrt_is_within_one_ulp(void **state) {
+static void inversesqrt_is_within_one_ulp(void **state)
+{
     (void)state;
     for (int i = 0; i < 300000; i++) {
         float x = fabsf(random_float(FLT_MAX));
-        if (x == 0.0f) continue;
+        if (x == 0.0f)
+            continue;
         float r = sc_inversesqrtf(x);
         double lo = nextafterf(r, 0.0f), hi = nextafterf(r, INFINITY);
         if (!(lo * lo * (double)x < 1.0 && hi * hi * (double)x > 1.0))
@@ -318,7 +343,8 @@ static void inversesqrt_is_within_one_ulp(void **state) {
     }
 }
 
-int main(void) {
+int main(void)
+{
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sin_cos_tan_of_signed_zero),
         cmocka_unit_test(sin_cos_tan_of_infinity_and_nan_are_nan),

@@ -24,39 +24,42 @@
 #define REF_SLACK 0x1p-50
 #define N_RANDOM 20000
 
-static double gamma_n(int n, double u) {
-    return n * u / (1.0 - n * u);
-}
+static double gamma_n(int n, double u) { return n * u / (1.0 - n * u); }
 
 /* ---- deterministic random inputs (splitmix64) ------------------------------------------- */
 
 static uint64_t rng_state = 0x243f6a8885a308d3u;
 
-static uint64_t next_u64(void) {
+static uint64_t next_u64(void)
+{
     uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
     return z ^ (z >> 31);
 }
 
-static double uniform(double lo, double hi) {
+static double uniform(double lo, double hi)
+{
     return lo + (hi - lo) * (double)(next_u64() >> 11) * 0x1p-53;
 }
 
 /* A float of random sign and significand with its exponent uniform in [-8, 8]. */
-static float random_float(void) {
+static float random_float(void)
+{
     float m = (float)uniform(1.0, 2.0);
     float x = ldexpf(m, (int)(next_u64() % 17) - 8);
     return next_u64() & 1 ? -x : x;
 }
 
-static void random_vector(int n, float *v) {
+static void random_vector(int n, float *v)
+{
     for (int k = 0; k < n; k++)
         v[k] = random_float();
 }
 
 /* A direction uniformly on the sphere (normalized in long double, then rounded to float). */
-static void random_unit(int n, float *v) {
+static void random_unit(int n, float *v)
+{
     long double g[4], len2 = 0;
     do {
         len2 = 0;
@@ -69,14 +72,16 @@ static void random_unit(int n, float *v) {
         v[k] = (float)(g[k] / sqrtl(len2));
 }
 
-static long double dot_ref(int n, const float *a, const float *b) {
+static long double dot_ref(int n, const float *a, const float *b)
+{
     long double s = 0;
     for (int k = 0; k < n; k++)
         s += (long double)a[k] * b[k];
     return s;
 }
 
-static double abs_dot(int n, const float *a, const float *b) {
+static double abs_dot(int n, const float *a, const float *b)
+{
     double s = 0;
     for (int k = 0; k < n; k++)
         s += fabs((double)a[k] * b[k]);
@@ -110,20 +115,15 @@ typedef struct {
 #define LOAD_(c, k) p[k]
 #define STORE_(c, k) p[k] = v.c
 #define ADAPT_BINARY(T, OP)                                                                        \
-    static void T##_t_##OP(const float *a, const float *b, float *o) {                             \
+    static void T##_t_##OP(const float *a, const float *b, float *o)                               \
+    {                                                                                              \
         T##_t_store(T##_##OP(T##_t_load(a), T##_t_load(b)), o);                                    \
     }
 #define ADAPT_UNARY(T, OP)                                                                         \
-    static void T##_t_##OP(const float *a, float *o) {                                             \
-        T##_t_store(T##_##OP(T##_t_load(a)), o);                                                   \
-    }
+    static void T##_t_##OP(const float *a, float *o) { T##_t_store(T##_##OP(T##_t_load(a)), o); }
 #define ADAPT(T, N, EACH)                                                                          \
-    static T T##_t_load(const float *p) {                                                          \
-        return (T){EACH(LOAD_)};                                                                   \
-    }                                                                                              \
-    static void T##_t_store(T v, float *p) {                                                       \
-        EACH(STORE_);                                                                              \
-    }                                                                                              \
+    static T T##_t_load(const float *p) { return (T){EACH(LOAD_)}; }                               \
+    static void T##_t_store(T v, float *p) { EACH(STORE_); }                                       \
     ADAPT_BINARY(T, add)                                                                           \
     ADAPT_BINARY(T, sub)                                                                           \
     ADAPT_BINARY(T, mul)                                                                           \
@@ -134,28 +134,33 @@ typedef struct {
     ADAPT_UNARY(T, neg)                                                                            \
     ADAPT_UNARY(T, abs)                                                                            \
     ADAPT_UNARY(T, normalize)                                                                      \
-    static void T##_t_scale(const float *a, float s, float *o) {                                   \
+    static void T##_t_scale(const float *a, float s, float *o)                                     \
+    {                                                                                              \
         T##_t_store(T##_scale(T##_t_load(a), s), o);                                               \
     }                                                                                              \
-    static void T##_t_clamp(const float *x, const float *lo, const float *hi, float *o) {          \
+    static void T##_t_clamp(const float *x, const float *lo, const float *hi, float *o)            \
+    {                                                                                              \
         T##_t_store(T##_clamp(T##_t_load(x), T##_t_load(lo), T##_t_load(hi)), o);                  \
     }                                                                                              \
-    static void T##_t_mix(const float *a, const float *b, const float *t, float *o) {              \
+    static void T##_t_mix(const float *a, const float *b, const float *t, float *o)                \
+    {                                                                                              \
         T##_t_store(T##_mix(T##_t_load(a), T##_t_load(b), T##_t_load(t)), o);                      \
     }                                                                                              \
-    static void T##_t_faceforward(const float *n, const float *i, const float *r, float *o) {      \
+    static void T##_t_faceforward(const float *n, const float *i, const float *r, float *o)        \
+    {                                                                                              \
         T##_t_store(T##_faceforward(T##_t_load(n), T##_t_load(i), T##_t_load(r)), o);              \
     }                                                                                              \
-    static void T##_t_refract(const float *i, const float *n, float eta, float *o) {               \
+    static void T##_t_refract(const float *i, const float *n, float eta, float *o)                 \
+    {                                                                                              \
         T##_t_store(T##_refract(T##_t_load(i), T##_t_load(n), eta), o);                            \
     }                                                                                              \
-    static float T##_t_dot(const float *a, const float *b) {                                       \
+    static float T##_t_dot(const float *a, const float *b)                                         \
+    {                                                                                              \
         return T##_dot(T##_t_load(a), T##_t_load(b));                                              \
     }                                                                                              \
-    static float T##_t_length(const float *a) {                                                    \
-        return T##_length(T##_t_load(a));                                                          \
-    }                                                                                              \
-    static float T##_t_distance(const float *a, const float *b) {                                  \
+    static float T##_t_length(const float *a) { return T##_length(T##_t_load(a)); }                \
+    static float T##_t_distance(const float *a, const float *b)                                    \
+    {                                                                                              \
         return T##_distance(T##_t_load(a), T##_t_load(b));                                         \
     }                                                                                              \
     static const vec_api T##_api = {N,                                                             \
@@ -189,7 +194,8 @@ static const vec_api *const apis[] = {&sc_vec2_api, &sc_vec3_api, &sc_vec4_api};
 
 /* One IEEE operation on floats, done in double and rounded once, is the correctly rounded
  * float result (53 >= 2·24 + 2), so + − × ÷ must match it exactly; min max abs clamp are exact. */
-static void componentwise_operations_are_correctly_rounded(void **state) {
+static void componentwise_operations_are_correctly_rounded(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -224,7 +230,8 @@ static void componentwise_operations_are_correctly_rounded(void **state) {
 
 /* mix(a, b, t) = a·(1 − t) + b·t: four roundings, so within
  * u·|a(1−t)|·(2 + u) + u·|b·t| + u·(1 + 2u)·(|a(1−t)| + |b·t|) <= 3.01·u·(|a(1−t)| + |b·t|). */
-static void mix_is_within_its_rounding_bound(void **state) {
+static void mix_is_within_its_rounding_bound(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -247,7 +254,8 @@ static void mix_is_within_its_rounding_bound(void **state) {
 /* ---- dot, length, distance, normalize ----------------------------------------------------- */
 
 /* Recursive summation of n rounded products: |dot − exact| <= γ_n·Σ|a_k·b_k|. */
-static void dot_is_within_the_summation_bound(void **state) {
+static void dot_is_within_the_summation_bound(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -257,13 +265,15 @@ static void dot_is_within_the_summation_bound(void **state) {
         random_vector(n, b);
         double err = (double)fabsl((*api)->dot(a, b) - dot_ref(n, a, b));
         double bound = (gamma_n(n, U_FLOAT) + REF_SLACK) * abs_dot(n, a, b);
-        if (!(err <= bound)) fail_msg("vec%d dot error %g > %g", n, err, bound);
+        if (!(err <= bound))
+            fail_msg("vec%d dot error %g > %g", n, err, bound);
     }
 }
 
 /* The stated order ((x·x' + y·y') + z·z') + w·w': 1e8 + 1 rounds back to 1e8 in binary32
  * (spacing 8 there), so the order decides between 0 and 1. */
-static void dot_sums_left_to_right(void **state) {
+static void dot_sums_left_to_right(void **state)
+{
     (void)state;
     sc_vec3 ones3 = sc_vec3_splat(1.0f);
     assert_true(sc_vec3_dot(sc_vec3_make(1e8f, 1.0f, -1e8f), ones3) == 0.0f);
@@ -276,7 +286,8 @@ static void dot_sums_left_to_right(void **state) {
  * square root halves that and adds one rounding: relative error <= γ_n/2 + u, to first order;
  * (1 + 2u) covers the rest. distance rounds each difference first (a relative 2u on each
  * square): γ_(n+2)/2 + u. */
-static void length_and_distance_are_within_their_bounds(void **state) {
+static void length_and_distance_are_within_their_bounds(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -300,7 +311,8 @@ static void length_and_distance_are_within_their_bounds(void **state) {
 /* normalize = a / length(a): the length carries γ_n/2 + u, each division one more u, so every
  * component is within (γ_n/2 + 2u)(1 + 4u) relative of a_k/|a| and the result's length within
  * the same of 1 (a few units of 2^-24: 3u for vec2, 4u for vec4). */
-static void normalize_gives_unit_length(void **state) {
+static void normalize_gives_unit_length(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -316,11 +328,13 @@ static void normalize_gives_unit_length(void **state) {
                 fail_msg("vec%d normalize component %d off by %Lg", n, k, fabsl(o[k] - want));
         }
         double unit_err = (double)fabsl(sqrtl(dot_ref(n, o, o)) - 1.0L);
-        if (!(unit_err <= bound)) fail_msg("vec%d |normalize| - 1 = %g > %g", n, unit_err, bound);
+        if (!(unit_err <= bound))
+            fail_msg("vec%d |normalize| - 1 = %g > %g", n, unit_err, bound);
     }
 }
 
-static void normalize_of_zero_is_nan(void **state) {
+static void normalize_of_zero_is_nan(void **state)
+{
     (void)state;
     sc_vec3 z = sc_vec3_normalize(sc_vec3_splat(0.0f));
     assert_true(isnan(z.x) && isnan(z.y) && isnan(z.z));
@@ -330,7 +344,8 @@ static void normalize_of_zero_is_nan(void **state) {
 
 /* reflect: t = 2·dot(N, I) carries 2γ_n·S (S = Σ|N_k I_k|); then I_c − t·N_c adds two roundings:
  * |R_c − exact| <= u·|I_c| + (2γ_n + 4.01u)·S·|N_c|. */
-static void reflect_is_within_its_rounding_bound(void **state) {
+static void reflect_is_within_its_rounding_bound(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -356,7 +371,8 @@ static void reflect_is_within_its_rounding_bound(void **state) {
 /* For unit I and N (unit within ~2u after rounding to float) the angle of reflection equals
  * the angle of incidence, dot(R, N) = −dot(I, N), and |R| = |I| = 1. The component bound
  * above is at most ~(3n + 5)u here; 64u covers it and the non-unit rounding of N. */
-static void reflect_angle_equals_incidence_angle(void **state) {
+static void reflect_angle_equals_incidence_angle(void **state)
+{
     (void)state;
     const double tol = 64 * U_FLOAT;
     FOR_EACH_API(api)
@@ -377,7 +393,8 @@ static void reflect_angle_equals_incidence_angle(void **state) {
 /* Error bound of refract by propagating absolute errors through each step of the formula
  * (first order, each rounding u relative to the magnitude of its result, ×1.01 for the
  * second-order terms). Valid for k >= 1/16, where sqrt amplifies an error in k by <= 2. */
-static double refract_bound(int n, const float *i, const float *nrm, float eta, int c) {
+static double refract_bound(int n, const float *i, const float *nrm, float eta, int c)
+{
     const double u = U_FLOAT;
     double d = (double)dot_ref(n, nrm, i), ad = fabs(d), e2 = (double)eta * eta;
     double e_d = gamma_n(n, u) * abs_dot(n, nrm, i);
@@ -387,14 +404,15 @@ static double refract_bound(int n, const float *i, const float *nrm, float eta, 
     double k = 1 - e2 * (1 - d * d), e_k = e_pr + u * (k + e_pr);
     double e_sq = e_k / sqrt(k) + u * (sqrt(k) + e_k);
     double s = fabs((double)eta * d) + sqrt(k);
-    double e_s =
-        fabs((double)eta) * e_d + u * fabs((double)eta) * (ad + e_d) + e_sq + u * (s + e_sq + e_d);
+    double e_s = fabs((double)eta) * e_d + u * fabs((double)eta) * (ad + e_d) + e_sq +
+                 u * (s + e_sq + e_d);
     double ei = fabs((double)eta * i[c]), sn = (s + e_s) * fabs(nrm[c]);
     double e_out = u * ei + fabs(nrm[c]) * e_s + u * sn + u * (ei + sn) * (1 + u);
     return 1.01 * e_out + REF_SLACK * (ei + sn);
 }
 
-static void refract_is_within_its_rounding_bound(void **state) {
+static void refract_is_within_its_rounding_bound(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -404,7 +422,8 @@ static void refract_is_within_its_rounding_bound(void **state) {
         random_unit(n, nrm);
         float eta = (float)uniform(0.3, 2.0);
         long double d = dot_ref(n, nrm, i), k = 1 - (long double)eta * eta * (1 - d * d);
-        if (k < 1.0L / 16) continue;
+        if (k < 1.0L / 16)
+            continue;
         (*api)->refract(i, nrm, eta, o);
         long double s = eta * d + sqrtl(k);
         for (int c = 0; c < n; c++) {
@@ -420,7 +439,8 @@ static void refract_is_within_its_rounding_bound(void **state) {
 /* Snell's law for unit I and N: sin θt = η·sin θi, i.e. |T × N| = η·|I × N|, with T unit and in
  * the plane of I and N, on the far side of the surface. Tolerance 64u as for reflect (the
  * per-component bound above is below ~30u for η <= 2, k >= 1/16). */
-static void refract_obeys_snells_law(void **state) {
+static void refract_obeys_snells_law(void **state)
+{
     (void)state;
     const double tol = 64 * U_FLOAT;
     for (int t = 0; t < N_RANDOM; t++) {
@@ -432,7 +452,8 @@ static void refract_obeys_snells_law(void **state) {
                 i[k] = -i[k];
         float eta = (float)uniform(0.3, 2.0);
         long double d = dot_ref(3, nrm, i), k = 1 - (long double)eta * eta * (1 - d * d);
-        if (k < 1.0L / 16) continue;
+        if (k < 1.0L / 16)
+            continue;
         sc_vec3 tv = sc_vec3_refract(sc_vec3_make(i[0], i[1], i[2]),
                                      sc_vec3_make(nrm[0], nrm[1], nrm[2]), eta);
         sc_dvec3 T = {tv.x, tv.y, tv.z}, I = {i[0], i[1], i[2]}, N = {nrm[0], nrm[1], nrm[2]};
@@ -447,7 +468,8 @@ static void refract_obeys_snells_law(void **state) {
 
 /* k < 0 (sin θi > 1/η): total internal reflection, the zero vector. Worked: 60° incidence from
  * glass to air, η = 1.5: k = 1 − 2.25·0.75 < 0. At normal incidence T = I for every η. */
-static void total_internal_reflection_gives_zero(void **state) {
+static void total_internal_reflection_gives_zero(void **state)
+{
     (void)state;
     sc_vec3 nrm = sc_vec3_make(0, 1, 0);
     sc_vec3 i = sc_vec3_make(sc_sinf(1.0471975f), -sc_cosf(1.0471975f), 0);
@@ -461,7 +483,8 @@ static void total_internal_reflection_gives_zero(void **state) {
         random_unit(n, nv);
         long double d = dot_ref(n, nv, iv);
         float eta = 1.0f / (float)sqrtl(1 - d * d) * 1.01f; /* η·sin θi = 1.01 > 1 */
-        if (fabsl(d) > 0.99L) continue;
+        if (fabsl(d) > 0.99L)
+            continue;
         (*api)->refract(iv, nv, eta, o);
         for (int k = 0; k < n; k++)
             assert_true(o[k] == 0.0f);
@@ -472,7 +495,8 @@ static void total_internal_reflection_gives_zero(void **state) {
 }
 
 /* faceforward(N, I, Nref) = N when dot(Nref, I) < 0, else −N (exact). */
-static void faceforward_turns_against_the_incident_direction(void **state) {
+static void faceforward_turns_against_the_incident_direction(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -494,7 +518,8 @@ static void faceforward_turns_against_the_incident_direction(void **state) {
 
 /* Each component is x − y of two rounded products: |error| <= (2u + u²)(|x| + |y|). The
  * result is orthogonal to a and b up to that error, and e_x × e_y = e_z (right-handed). */
-static void cross_is_orthogonal_and_within_its_bound(void **state) {
+static void cross_is_orthogonal_and_within_its_bound(void **state)
+{
     (void)state;
     for (int t = 0; t < N_RANDOM; t++) {
         float a[3], b[3];
@@ -522,7 +547,8 @@ static void cross_is_orthogonal_and_within_its_bound(void **state) {
 /* ---- the contract with shadecalc eval ------------------------------------------------------ */
 
 /* Same formulas, same order, each operation rounded to binary32: bit-identical to pmath highp. */
-static void float_vectors_match_eval_highp_bit_for_bit(void **state) {
+static void float_vectors_match_eval_highp_bit_for_bit(void **state)
+{
     (void)state;
     FOR_EACH_API(api)
     for (int t = 0; t < N_RANDOM; t++) {
@@ -532,7 +558,8 @@ static void float_vectors_match_eval_highp_bit_for_bit(void **state) {
         random_vector(n, a);
         random_vector(n, b);
         random_vector(n, c);
-        if (t % 2) random_unit(n, b);
+        if (t % 2)
+            random_unit(n, b);
         for (int k = 0; k < n; k++)
             ad[k] = a[k], bd[k] = b[k], cd[k] = c[k];
         float eta = (float)uniform(0.2, 2.5);
@@ -552,8 +579,8 @@ static void float_vectors_match_eval_highp_bit_for_bit(void **state) {
         SAME((*api)->refract(a, b, eta, o), sc_p_refract(SC_HIGHP, ad, bd, eta, n, od));
         SAME((*api)->faceforward(a, b, c, o), sc_p_faceforward(SC_HIGHP, ad, bd, cd, n, od));
         if (n == 3) {
-            sc_vec3 x =
-                sc_vec3_cross(sc_vec3_make(a[0], a[1], a[2]), sc_vec3_make(b[0], b[1], b[2]));
+            sc_vec3 x = sc_vec3_cross(sc_vec3_make(a[0], a[1], a[2]),
+                                      sc_vec3_make(b[0], b[1], b[2]));
             sc_p_cross(SC_HIGHP, ad, bd, od);
             assert_true(x.x == od[0] && x.y == od[1] && x.z == od[2]);
         }
@@ -567,20 +594,21 @@ static void float_vectors_match_eval_highp_bit_for_bit(void **state) {
  * normalize to unit length within (γ_3/2 + 2u)(1 + 4u), cross orthogonal within its bound,
  * reflect preserving length for unit N. On a platform whose long double is double, the
  * reference shares the bound, hence the factor 2. */
-static void dvec3_meets_the_double_bounds(void **state) {
+static void dvec3_meets_the_double_bounds(void **state)
+{
     (void)state;
     const double u = U_DOUBLE, ref = LDBL_MANT_DIG > 53 ? 1.0 : 2.0;
     for (int t = 0; t < N_RANDOM; t++) {
         sc_dvec3 a = {uniform(-100, 100), uniform(-100, 100), uniform(-100, 100)};
         sc_dvec3 b = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-        long double exact =
-            (long double)a.x * b.x + (long double)a.y * b.y + (long double)a.z * b.z;
+        long double exact = (long double)a.x * b.x + (long double)a.y * b.y +
+                            (long double)a.z * b.z;
         double mag = fabs(a.x * b.x) + fabs(a.y * b.y) + fabs(a.z * b.z);
         assert_true(fabsl(sc_dvec3_dot(a, b) - exact) <= ref * gamma_n(3, u) * mag * (1 + 4 * u));
 
         sc_dvec3 nrm = sc_dvec3_normalize(b);
-        long double l2 =
-            (long double)nrm.x * nrm.x + (long double)nrm.y * nrm.y + (long double)nrm.z * nrm.z;
+        long double l2 = (long double)nrm.x * nrm.x + (long double)nrm.y * nrm.y +
+                         (long double)nrm.z * nrm.z;
         double unit_bound = ref * (gamma_n(3, u) / 2 + 2 * u) * (1 + 4 * u);
         assert_true(fabsl(sqrtl(l2) - 1) <= unit_bound);
 
@@ -603,7 +631,8 @@ static void dvec3_meets_the_double_bounds(void **state) {
     assert_true(sc_dvec3_length(m) == 5.0);
 }
 
-int main(void) {
+int main(void)
+{
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(componentwise_operations_are_correctly_rounded),
         cmocka_unit_test(mix_is_within_its_rounding_bound),

@@ -58,7 +58,10 @@ static inline vf vf_abs(vf a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
 
 static inline vd vd_from_lo(vf x) { return _mm_cvtps_pd(x); }
 static inline vd vd_from_hi(vf x) { return _mm_cvtps_pd(_mm_movehl_ps(x, x)); }
-static inline vf vf_from_vd(vd lo, vd hi) { return _mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi)); }
+static inline vf vf_from_vd(vd lo, vd hi)
+{
+    return _mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi));
+}
 static inline vd vd_set1(double x) { return _mm_set1_pd(x); }
 static inline vd vd_add(vd a, vd b) { return _mm_add_pd(a, b); }
 static inline vd vd_sub(vd a, vd b) { return _mm_sub_pd(a, b); }
@@ -68,7 +71,10 @@ static inline vd vd_fma(vd a, vd b, vd c) { return _mm_add_pd(_mm_mul_pd(a, b), 
 static inline vd vd_sqrt(vd a) { return _mm_sqrt_pd(a); }
 static inline vd vd_min(vd a, vd b) { return _mm_min_pd(a, b); }
 static inline vd vd_max(vd a, vd b) { return _mm_max_pd(a, b); }
-static inline vd vd_rint(vd a) { return _mm_round_pd(a, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC); }
+static inline vd vd_rint(vd a)
+{
+    return _mm_round_pd(a, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
 static inline vdm vd_lt(vd a, vd b) { return _mm_cmplt_pd(a, b); }
 static inline vd vd_select(vdm m, vd a, vd b) { return _mm_blendv_pd(b, a, m); }
 static inline vl vd_as_vl(vd x) { return _mm_castpd_si128(x); }
