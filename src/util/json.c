@@ -57,7 +57,7 @@ static int literal(parser *p, const char *word)
 {
     size_t n = strlen(word);
     if (p->len - p->pos < n || memcmp(p->s + p->pos, word, n) != 0) {
-        fail(p, "unexpected %s", peek(p) < 0 ? "end of input" : "character");
+        fail(p, "expected %s", word);
         return 0;
     }
     p->pos += n;
@@ -147,7 +147,9 @@ static unsigned unicode_escape(parser *p)
     if (c >= 0xDC00 && c <= 0xDFFF)
         return fail(p, "lone low surrogate"), 0;
     if (c >= 0xD800 && c <= 0xDBFF) {
-        if (!literal(p, "\\u") || !hex4(p, &low) || low < 0xDC00 || low > 0xDFFF)
+        int pair = p->len - p->pos >= 2 && memcmp(p->s + p->pos, "\\u", 2) == 0;
+        p->pos += pair ? 2 : 0;
+        if (!pair || !hex4(p, &low) || low < 0xDC00 || low > 0xDFFF)
             return fail(p, "high surrogate without its low half"), 0;
         c = 0x10000 + ((c - 0xD800) << 10) + (low - 0xDC00);
     }
