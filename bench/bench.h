@@ -92,6 +92,11 @@ enum { BENCH_TABLE, BENCH_CSV, BENCH_JSON, BENCH_MARKDOWN };
 void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n);
 /* The table's kernels (those named; all when n_kernels is 0) as text, CSV or JSON */
 void bench_list(FILE *out, int format, const char *const *kernels, int n_kernels);
+/* A row's name in the reports: "isa tier" ("avx2 u1", "sleef-avx2 u10"), the isa alone for the
+ * plain loops ("libm") */
+const char *bench_row_name(const bench_row *r, char *buf, size_t size);
+/* The Pareto plot of `bench --plot` as SVG; 0, or -1 if out of memory or writing failed. */
+int bench_plot_write(FILE *out, const bench_row *rows, int n);
 /* s as the body of a JSON string: quotes, backslashes and control characters escaped */
 void bench_json_text(FILE *out, const char *s);
 /* Whether name is in list (an empty list selects everything). */

@@ -86,15 +86,17 @@ static double stated_ulp(const bench_row *r)
     return r->entry && r->entry->bound_ulp > 0 ? r->entry->bound_ulp : NAN;
 }
 
-/* "isa tier" of the peer row that dominates r, or "" */
+const char *bench_row_name(const bench_row *r, char *buf, size_t size)
+{
+    int loop = strcmp(r->tier, "loop") == 0;
+    snprintf(buf, size, "%s%s%s", r->isa, loop ? "" : " ", loop ? "" : r->tier);
+    return buf;
+}
+
+/* The name of the peer row that dominates r, or "" */
 static const char *dominated_text(const bench_row *r, char *buf, size_t size)
 {
-    const bench_row *p = r->dominated_by;
-    if (!p)
-        return "";
-    snprintf(buf, size, "%s%s%s", p->isa, strcmp(p->tier, "loop") ? " " : "",
-             strcmp(p->tier, "loop") ? p->tier : "");
-    return buf;
+    return r->dominated_by ? bench_row_name(r->dominated_by, buf, size) : "";
 }
 
 static void table_row(FILE *out, const bench_row *r)

@@ -235,6 +235,28 @@ static void curve_markers(FILE *out, const sc_plot *p, const layout *l, const pl
     }
 }
 
+/* A marker at every point of curve s with its label beside it: on the right of the points in
+ * the left half of the plot, on the left of the others, so that the text stays in the frame. */
+static void labelled_points(FILE *out, const sc_plot *p, const layout *l, const plot_axis *x,
+                            const plot_axis *y, int s)
+{
+    const sc_plot_series *c = &p->series[s];
+    for (size_t i = 0; i < c->n; i++) {
+        double px, py;
+        if (!curve_point(p, l, x, y, s, i, &px, &py))
+            continue;
+        plot_marker(out, s, px, py);
+        if (!c->point_labels[i] || !c->point_labels[i][0])
+            continue;
+        int left_half = px < l->f.left + l->f.width / 2.0;
+        fprintf(out, "<text class=\"point-label\" x=\"%.2f\" y=\"%.2f\" text-anchor=\"%s\" "
+                     "stroke=\"none\" fill=\"#222\">",
+                px + (left_half ? 6.0 : -6.0), py - 5.0, left_half ? "start" : "end");
+        plot_xml_text(out, c->point_labels[i]);
+        fputs("</text>\n", out);
+    }
+}
+
 static void write_series(FILE *out, const sc_plot *p, const layout *l, const plot_axis *x,
                          const plot_axis *y, int s)
 {
@@ -259,7 +281,10 @@ static void write_series(FILE *out, const sc_plot *p, const layout *l, const plo
         open = 1;
     }
     fputs(open ? "\"/>\n" : "", out);
-    curve_markers(out, p, l, x, y, s);
+    if (c->point_labels)
+        labelled_points(out, p, l, x, y, s);
+    else
+        curve_markers(out, p, l, x, y, s);
     fputs("</g>\n", out);
     if (p->polar && c->has_incident && isfinite(c->incident_deg))
         incident_arrow(out, l, s, c->incident_deg);
