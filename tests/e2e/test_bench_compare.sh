@@ -94,3 +94,28 @@ head -c 4096 /dev/urandom >"$bad"
 expect "compare random bytes" 2 '' "*" -- bench --compare "$a" "$bad"
 expect "compare missing file" 1 '' "error: bench: $e2e_tmp/none.json: No such file or directory" -- bench --compare "$e2e_tmp/none.json" "$a"
 expect "compare one report" 2 '' "error: bench: --compare A.json B.json: expected one report B after A" -- bench --compare "$a"
+
+# --plot: an SVG that parses, passes the figure checks, and labels every row of the smallest n
+# (the plot's points) with its name.
+svg=$e2e_tmp/pareto.svg
+"$SHADECALC" bench --n 64,128 --repeat 1 --isa scalar --plot "$svg" exp sqrt >"$e2e_tmp/out" 2>"$e2e_tmp/err"
+verdict "plot: exit 0" test $? = 0
+verdict "plot: svg_check" python3 tests/e2e/svg_check.py "$svg"
+"$SHADECALC" bench --n 64,128 --repeat 1 --isa scalar -f json exp sqrt >"$e2e_tmp/rows.json" 2>/dev/null
+verdict "plot: every row labelled" python3 - "$svg" "$e2e_tmp/rows.json" <<'PY'
+import json, sys
+import xml.etree.ElementTree as ET
+ns = "{http://www.w3.org/2000/svg}"
+root = ET.parse(sys.argv[1]).getroot()
+labels = {}
+for g in root.iter(ns + "g"):
+    if g.get("class") == "series":
+        labels[g.get("data-label")] = sorted(
+            t.text for t in g.iter(ns + "text") if t.get("class") == "point-label")
+rows = [r for r in json.load(open(sys.argv[2]))["rows"] if r["n"] == 64 and r["max_ulp"] > 0]
+for kernel in ("exp", "sqrt"):
+    want = sorted(r["isa"] + ("" if r["tier"] == "loop" else " " + r["tier"])
+                  for r in rows if r["kernel"] == kernel)
+    assert labels[kernel] == want, (kernel, labels.get(kernel), want)
+PY
+expect "plot: unwritable" 1 '*' "error: bench: $e2e_tmp/no/dir/p.svg: No such file or directory" -- bench --n 16 --repeat 1 --isa scalar --tier u1 --plot "$e2e_tmp/no/dir/p.svg" sqrt

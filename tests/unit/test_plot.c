@@ -150,6 +150,29 @@ static void log_axis_drops_what_it_cannot_show(void **state)
     free(text);
 }
 
+/* Point labels: one text per labelled shown point, escaped, on the side of the point that
+ * keeps it inside the frame; a curve without them has none. */
+static void point_labels_mark_every_point(void **state)
+{
+    (void)state;
+    const double x[] = {1, NAN, 10, 100}, y[] = {1, NAN, 3, 2};
+    const char *const labels[] = {"left", NULL, NULL, "b<c"};
+    const sc_plot_series s[] = {{.label = "k", .x = x, .y = y, .n = 4, .point_labels = labels},
+                                {.label = "plain", .x = x, .y = y, .n = 4}};
+    sc_plot p = {.xlog = 1, .ymin = NAN, .ymax = NAN, .series = s, .n_series = 2};
+    char *text = write_to_text(&p);
+    assert_int_equal(count(text, "class=\"point-label\""), 2);
+    const char *left = strstr(text, ">left</text>"), *right = strstr(text, ">b&lt;c</text>");
+    assert_non_null(left);
+    assert_non_null(right);
+    /* the leftmost point's label reads rightwards from it, the rightmost one's leftwards */
+    const char *start = strstr(text, "class=\"point-label\"");
+    assert_true(start < left && strstr(start, "text-anchor=\"start\"") < left);
+    const char *second = strstr(start + 1, "class=\"point-label\"");
+    assert_true(second < right && strstr(second, "text-anchor=\"end\"") < right);
+    free(text);
+}
+
 /* The polar plot puts value r at angle θ from the vertical: the points of a constant curve lie
  * on one circle about the centre. */
 static void polar_points_lie_on_a_circle(void **state)
@@ -374,6 +397,7 @@ int main(void)
         cmocka_unit_test(log_ticks_are_decades),
         cmocka_unit_test(every_point_is_drawn_and_gaps_break_the_line),
         cmocka_unit_test(log_axis_drops_what_it_cannot_show),
+        cmocka_unit_test(point_labels_mark_every_point),
         cmocka_unit_test(polar_points_lie_on_a_circle),
         cmocka_unit_test(fixed_y_range_is_kept),
         cmocka_unit_test(write_failure_is_reported),
