@@ -223,6 +223,10 @@ static int parse_options(int argc, char **argv, options *o)
     }
     if (status == SC_EXIT_OK && o->output && !o->format_given)
         o->format = format_of_path(o->output);
+    if (status == SC_EXIT_OK && o->compare && o->plot) {
+        sc_error("bench: --plot draws a run, not a --compare");
+        return SC_EXIT_USAGE;
+    }
     if (status == SC_EXIT_OK && o->compare && argc - optind != 1) {
         sc_error("bench: --compare A.json B.json: expected one report B after A");
         return SC_EXIT_USAGE;

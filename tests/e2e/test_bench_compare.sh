@@ -119,3 +119,4 @@ for kernel in ("exp", "sqrt"):
     assert labels[kernel] == want, (kernel, labels.get(kernel), want)
 PY
 expect "plot: unwritable" 1 '*' "error: bench: $e2e_tmp/no/dir/p.svg: No such file or directory" -- bench --n 16 --repeat 1 --isa scalar --tier u1 --plot "$e2e_tmp/no/dir/p.svg" sqrt
+expect "plot with compare" 2 '' "error: bench: --plot draws a run, not a --compare" -- bench --compare "$a" "$a" --plot "$e2e_tmp/p.svg"
