@@ -261,7 +261,8 @@ static void place_label(FILE *out, label_boxes *b, const frame *f, double px, do
                         const char *text)
 {
     enum { PLACES = 16 };
-    static const double dys[PLACES / 2] = {-5.0, 14.0, -17.0, 26.0, -29.0, 38.0, -41.0, 50.0};
+    /* above and below, one label height (15 pixels) further each time */
+    static const double dys[PLACES / 2] = {-5.0, 14.0, -20.0, 29.0, -35.0, 44.0, -50.0, 59.0};
     double w = plot_text_width(text), box[4] = {0}, x = 0, y = 0;
     int inward = px < f->left + f->width / 2.0 ? 1 : -1, side = inward;
     for (int k = 0; k <= PLACES; k++) {
