@@ -53,14 +53,15 @@ static int number_member(const sc_json *row, const char *key, double *out)
     return 0;
 }
 
+static const char *const key_names[4] = {"kernel", "scene", "isa", "tier"}; /* with n */
+
 /* Row i of a report; 0, or -1 with the error printed */
 static int read_row(const char *path, const sc_json *j, int i, bench_cmp_row *r)
 {
-    static const char *const keys[] = {"kernel", "scene", "isa", "tier"};
     const char **texts[] = {&r->kernel, &r->scene, &r->isa, &r->tier};
     for (int k = 0; k < 4; k++)
-        if (!(*texts[k] = text_member(j, keys[k]))) {
-            sc_error("bench: %s: rows[%d]: \"%s\" is missing or not a string", path, i, keys[k]);
+        if (!(*texts[k] = text_member(j, key_names[k]))) {
+            sc_error("bench: %s: rows[%d]: \"%s\" is missing or not a string", path, i, key_names[k]);
             return -1;
         }
     const char *bad = NULL;
@@ -186,46 +187,60 @@ static void table_pair(FILE *out, const pair *p)
     fprintf(out, "  %c\n", significance(p));
 }
 
-static void csv_pair(FILE *out, const pair *p)
+static const char *const value_names[3] = {"ns_a", "ns_b", "ratio"};
+
+/* The key's texts, the two medians and their ratio (NaN where a side is missing), and the
+ * significance: 1, 0, or -1 for rows only in one report */
+static int pair_fields(const pair *p, const char *texts[4], double values[3])
 {
     const bench_cmp_row *k = p->a ? p->a : p->b;
-    const char *const texts[] = {k->kernel, k->scene, k->isa, k->tier};
+    texts[0] = k->kernel, texts[1] = k->scene, texts[2] = k->isa, texts[3] = k->tier;
+    values[0] = p->a ? p->a->ns : NAN;
+    values[1] = p->b ? p->b->ns : NAN;
+    values[2] = values[1] / values[0];
+    char mark = p->a && p->b ? significance(p) : ' ';
+    return mark == '*' ? 1 : mark == '~' ? 0 : -1;
+}
+
+static const char *only_in(const pair *p) { return p->a && p->b ? NULL : p->a ? "A" : "B"; }
+
+static void csv_pair(FILE *out, const pair *p)
+{
+    const char *texts[4];
+    double values[3];
+    int significant = pair_fields(p, texts, values);
     for (int i = 0; i < 4; i++) {
         csv_text(out, texts[i]);
         fputc(',', out);
     }
-    fprintf(out, "%zu,", k->n);
-    number_or(out, p->a ? p->a->ns : NAN, "%.6g", "");
-    fputc(',', out);
-    number_or(out, p->b ? p->b->ns : NAN, "%.6g", "");
-    fputc(',', out);
-    number_or(out, p->a && p->b ? p->b->ns / p->a->ns : NAN, "%.6g", "");
-    char mark = p->a && p->b ? significance(p) : ' ';
-    fprintf(out, ",%s,%s\n", mark == '*' ? "1" : mark == '~' ? "0" : "",
-            p->a && p->b ? "" : p->a ? "A" : "B");
+    fprintf(out, "%zu", (p->a ? p->a : p->b)->n);
+    for (int i = 0; i < 3; i++) {
+        fputc(',', out);
+        number_or(out, values[i], "%.6g", "");
+    }
+    fprintf(out, ",%s,%s\n", significant == 1 ? "1" : significant == 0 ? "0" : "",
+            only_in(p) ? only_in(p) : "");
 }
 
 static void json_pair(FILE *out, const pair *p, int first)
 {
-    const bench_cmp_row *k = p->a ? p->a : p->b;
-    fprintf(out, "%s    {\"kernel\": \"", first ? "" : ",\n");
-    bench_json_text(out, k->kernel);
-    fputs("\", \"scene\": \"", out);
-    bench_json_text(out, k->scene);
-    fputs("\", \"isa\": \"", out);
-    bench_json_text(out, k->isa);
-    fputs("\", \"tier\": \"", out);
-    bench_json_text(out, k->tier);
-    fprintf(out, "\", \"n\": %zu, \"ns_a\": ", k->n);
-    number_or(out, p->a ? p->a->ns : NAN, "%.6g", "null");
-    fputs(", \"ns_b\": ", out);
-    number_or(out, p->b ? p->b->ns : NAN, "%.6g", "null");
-    fputs(", \"ratio\": ", out);
-    number_or(out, p->a && p->b ? p->b->ns / p->a->ns : NAN, "%.6g", "null");
-    char mark = p->a && p->b ? significance(p) : ' ';
-    fprintf(out, ", \"significant\": %s, \"only_in\": %s}",
-            mark == '*' ? "true" : mark == '~' ? "false" : "null",
-            p->a && p->b ? "null" : p->a ? "\"A\"" : "\"B\"");
+    const char *texts[4];
+    double values[3];
+    int significant = pair_fields(p, texts, values);
+    fputs(first ? "    {" : ",\n    {", out);
+    for (int i = 0; i < 4; i++) {
+        fprintf(out, "\"%s\": \"", key_names[i]);
+        bench_json_text(out, texts[i]);
+        fputs("\", ", out);
+    }
+    fprintf(out, "\"n\": %zu", (p->a ? p->a : p->b)->n);
+    for (int i = 0; i < 3; i++) {
+        fprintf(out, ", \"%s\": ", value_names[i]);
+        number_or(out, values[i], "%.6g", "null");
+    }
+    fprintf(out, ", \"significant\": %s, \"only_in\": %s%s%s}",
+            significant == 1 ? "true" : significant == 0 ? "false" : "null",
+            only_in(p) ? "\"" : "null", only_in(p) ? only_in(p) : "", only_in(p) ? "\"" : "");
 }
 
 static void write_pair(FILE *out, int format, const pair *p, int first)
