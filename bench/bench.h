@@ -92,7 +92,39 @@ enum { BENCH_TABLE, BENCH_CSV, BENCH_JSON, BENCH_MARKDOWN };
 void bench_report(FILE *out, int format, const bench_machine *m, const bench_row *rows, int n);
 /* The table's kernels (those named; all when n_kernels is 0) as text, CSV or JSON */
 void bench_list(FILE *out, int format, const char *const *kernels, int n_kernels);
+/* A row's name in the reports: "isa tier" ("avx2 u1", "sleef-avx2 u10"), the isa alone for the
+ * plain loops ("libm") */
+const char *bench_row_name(const bench_row *r, char *buf, size_t size);
+/* The Pareto plot of `bench --plot` as SVG; 0, or -1 if out of memory or writing failed. */
+int bench_plot_write(FILE *out, const bench_row *rows, int n);
+/* s as the body of a JSON string: quotes, backslashes and control characters escaped */
+void bench_json_text(FILE *out, const char *s);
 /* Whether name is in list (an empty list selects everything). */
 int bench_selected(const char *name, const char *const *list, int n);
+
+/* ---- --compare (bench/compare.c) ---- */
+
+typedef struct {
+    const char *kernel, *scene, *isa, *tier; /* the key, with n; pointing into the document */
+    size_t n;
+    double ns, mad; /* ns_per_elem (the median) and ns_mad; NaN where the report has null */
+} bench_cmp_row;
+
+typedef struct {
+    struct sc_json *doc;
+    bench_cmp_row *rows;
+    int n;
+} bench_report_file;
+
+/* Reads a JSON report of `bench -o FILE.json`. SC_EXIT_OK; SC_EXIT_RUNTIME if the file cannot
+ * be read; SC_EXIT_USAGE if it is not such a report (the error, with the file and the line and
+ * column or the row, printed). */
+int bench_report_read(const char *path, bench_report_file *rep);
+void bench_report_free(bench_report_file *rep);
+/* The rows of a and b matched by kernel, scene, isa, tier and n: the ratio B/A of the median
+ * ns per element and its significance, then the rows only in one report; table, CSV or JSON
+ * (Markdown prints the table). 0, or -1 out of memory. */
+int bench_compare(FILE *out, int format, const char *path_a, const bench_report_file *a,
+                  const char *path_b, const bench_report_file *b);
 
 #endif

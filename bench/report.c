@@ -32,11 +32,13 @@ static void isa_list(const sc_batch_entry *first, char *buf, size_t size)
     }
 }
 
-/* s as a JSON string body (the table's texts are ASCII; quotes and backslashes escaped) */
-static void json_text(FILE *out, const char *s)
+void bench_json_text(FILE *out, const char *s)
 {
     for (; *s; s++)
-        fprintf(out, *s == '"' || *s == '\\' ? "\\%c" : "%c", *s);
+        if ((unsigned char)*s < 0x20)
+            fprintf(out, "\\u%04x", (unsigned)*s);
+        else
+            fprintf(out, *s == '"' || *s == '\\' ? "\\%c" : "%c", *s);
 }
 
 static void list_row(FILE *out, int format, const sc_batch_entry *e, int first)
@@ -54,7 +56,7 @@ static void list_row(FILE *out, int format, const sc_batch_entry *e, int first)
         fprintf(out, e->bound_ulp > 0 ? "%g" : "null", e->bound_ulp);
         fprintf(out, ", \"bound_rel\": %g, \"bound_abs\": %g, \"domain\": \"", e->bound_rel,
                 e->bound_abs);
-        json_text(out, e->domain);
+        bench_json_text(out, e->domain);
         fprintf(out, "\"}");
     } else {
         fprintf(out, "%-12s %-9s %-20s %-20s %s\n", e->kernel, e->tier, isas, bound, e->domain);
@@ -87,15 +89,17 @@ static double stated_ulp(const bench_row *r)
     return r->entry && r->entry->bound_ulp > 0 ? r->entry->bound_ulp : NAN;
 }
 
-/* "isa tier" of the peer row that dominates r, or "" */
+const char *bench_row_name(const bench_row *r, char *buf, size_t size)
+{
+    int loop = strcmp(r->tier, "loop") == 0;
+    snprintf(buf, size, "%s%s%s", r->isa, loop ? "" : " ", loop ? "" : r->tier);
+    return buf;
+}
+
+/* The name of the peer row that dominates r, or "" */
 static const char *dominated_text(const bench_row *r, char *buf, size_t size)
 {
-    const bench_row *p = r->dominated_by;
-    if (!p)
-        return "";
-    snprintf(buf, size, "%s%s%s", p->isa, strcmp(p->tier, "loop") ? " " : "",
-             strcmp(p->tier, "loop") ? p->tier : "");
-    return buf;
+    return r->dominated_by ? bench_row_name(r->dominated_by, buf, size) : "";
 }
 
 static void table_row(FILE *out, const bench_row *r)
@@ -205,9 +209,9 @@ static void metadata_json(FILE *out, const bench_machine *m)
             "  \"run\": {\"date\": \"%s\", \"load_average\": [%.2f, %.2f, %.2f], "
             "\"compiler\": \"",
             m->date, m->load[0], m->load[1], m->load[2]);
-    json_text(out, BENCH_COMPILER);
+    bench_json_text(out, BENCH_COMPILER);
     fprintf(out, "\", \"flags\": \"");
-    json_text(out, SC_BENCH_FLAGS);
+    bench_json_text(out, SC_BENCH_FLAGS);
     fprintf(out, "\"},\n");
     if (*bench_sleef_absence())
         fprintf(out, "  \"sleef\": null, \"sleef_absent\": \"%s\",\n", bench_sleef_absence());

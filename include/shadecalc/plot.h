@@ -11,7 +11,8 @@
  * The SVG holds one <g class="series"> per curve (its label in data-label) with one <polyline>
  * per unbroken run of points: a NaN or infinite value, or a value a log axis cannot show
  * (<= 0), breaks the curve. Each curve has its own colour, dash pattern and marker shape, so
- * that curves that coincide stay distinguishable. The legend sits in a corner of the plot
+ * that curves that coincide stay distinguishable. A curve with point labels has a marker at
+ * every point, each labelled (a scatter: NaN between the points leaves them unconnected). The legend sits in a corner of the plot
  * that no curve crosses, or else below the plot; the canvas grows to hold it and the title,
  * so no text is clipped.
  *
@@ -37,8 +38,10 @@ typedef struct {
     const char *label; /* legend text; NULL for a curve without a legend entry */
     const double *x, *y;
     size_t n;
-    int has_incident;    /* polar: draw the incident direction of this curve */
-    double incident_deg; /* its angle from the normal, in degrees, as x */
+    int has_incident;                /* polar: draw the incident direction of this curve */
+    double incident_deg;             /* its angle from the normal, in degrees, as x */
+    const char *const *point_labels; /* NULL, or n texts (NULL entries: none): a marker at
+                                        every shown point, with its text beside it */
 } sc_plot_series;
 
 typedef struct {

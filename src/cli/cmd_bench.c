@@ -1,5 +1,6 @@
 /* shadecalc bench — speed against accuracy of every batch kernel × instruction set × tier,
  * measured in one run on the same inputs (bench/). */
+#include <errno.h>
 #include <getopt.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: shadecalc bench [KERNEL...] [OPTIONS]\n"
+            "       shadecalc bench --compare A.json B.json [-f table|csv|json] [-o FILE]\n"
             "\n"
             "Times each batch kernel (shadecalc bench --list) on every instruction set and tier\n"
             "on the same inputs: ns/element (median of K repeats after a warm-up, min, max) at\n"
@@ -29,6 +31,13 @@ static void usage(FILE *out)
             "  -f, --format F      table|csv|json|markdown (default table; with -o, from the\n"
             "                      file's extension .csv, .json, .md when not given)\n"
             "  -o, --output FILE   the report into FILE (written whole or not at all)\n"
+            "  -p, --plot FILE.svg the Pareto plot: ns/element against max ULP (log-log) per\n"
+            "                      kernel at the smallest n, each row labelled, the Pareto set\n"
+            "                      joined\n"
+            "  -c, --compare A B   two JSON reports (-o X.json) row by row: the ratio B/A of\n"
+            "                      the median ns/element, * where the medians differ by more\n"
+            "                      than 3x their combined MAD, ~ otherwise; rows only in one\n"
+            "                      report listed as such\n"
             "  -h, --help          this help\n"
             "The scalar accurate kernel and the libm loop are always measured (the baselines).\n");
 }
@@ -38,6 +47,8 @@ typedef struct {
     int format, list;
     int format_given;
     const char *output;
+    const char *plot;
+    const char *compare, *compare_b; /* reports A and B (B: the one operand) */
 } options;
 
 /* Splits a comma list in place into out[]; returns the count, or -1 if more than max. */
@@ -187,14 +198,16 @@ static int parse_kernels(int argc, char **argv, options *o)
 static int parse_options(int argc, char **argv, options *o)
 {
     static const struct option longs[] = {
-        {"list", no_argument, NULL, 'l'},         {"isa", required_argument, NULL, 'i'},
-        {"tier", required_argument, NULL, 't'},   {"n", required_argument, NULL, 'n'},
-        {"repeat", required_argument, NULL, 'r'}, {"format", required_argument, NULL, 'f'},
-        {"warmup", required_argument, NULL, 'w'}, {"output", required_argument, NULL, 'o'},
-        {"help", no_argument, NULL, 'h'},         {NULL, 0, NULL, 0}};
+        {"list", no_argument, NULL, 'l'},          {"isa", required_argument, NULL, 'i'},
+        {"tier", required_argument, NULL, 't'},    {"n", required_argument, NULL, 'n'},
+        {"repeat", required_argument, NULL, 'r'},  {"format", required_argument, NULL, 'f'},
+        {"warmup", required_argument, NULL, 'w'},  {"output", required_argument, NULL, 'o'},
+        {"compare", required_argument, NULL, 'c'}, {"plot", required_argument, NULL, 'p'},
+        {"help", no_argument, NULL, 'h'},          {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "li:t:n:r:f:w:o:h", longs)) != -1) {
+    while (status == SC_EXIT_OK &&
+           (c = sc_getopt(argc, argv, "li:t:n:r:f:w:o:c:p:h", longs)) != -1) {
         switch (c) {
         case 'l': o->list = 1; break;
         case 'i': status = parse_isas(optarg, o); break;
@@ -203,6 +216,8 @@ static int parse_options(int argc, char **argv, options *o)
         case 'r': status = parse_count("repeat", optarg, 1, 64, &o->run.repeat); break;
         case 'w': status = parse_count("warmup", optarg, 1, 1000, &o->run.warmup); break;
         case 'o': o->output = optarg; break;
+        case 'c': o->compare = optarg; break;
+        case 'p': o->plot = optarg; break;
         case 'f': status = parse_format(optarg, o); break;
         case 'h': usage(stdout); return -1;
         default: return sc_usage_error("bench", argv, optopt);
@@ -210,33 +225,89 @@ static int parse_options(int argc, char **argv, options *o)
     }
     if (status == SC_EXIT_OK && o->output && !o->format_given)
         o->format = format_of_path(o->output);
-    return status == SC_EXIT_OK ? parse_kernels(argc, argv, o) : status;
+    if (status == SC_EXIT_OK && o->compare && o->plot) {
+        sc_error("bench: --plot draws a run, not a --compare");
+        return SC_EXIT_USAGE;
+    }
+    if (status == SC_EXIT_OK && o->compare && argc - optind != 1) {
+        sc_error("bench: --compare A.json B.json: expected one report B after A");
+        return SC_EXIT_USAGE;
+    }
+    return status != SC_EXIT_OK || o->compare ? status : parse_kernels(argc, argv, o);
 }
 
-/* The report to standard output, or whole into the -o file */
-static int write_report(const options *o, const bench_machine *m, const bench_row *rows, int n)
+typedef struct {
+    const options *o;
+    const bench_machine *m;
+    const bench_row *rows;
+    int n;
+    const bench_report_file *a, *b;
+} report_job;
+
+static int write_bench(FILE *out, const report_job *j)
 {
-    if (!o->output) {
-        bench_report(stdout, o->format, m, rows, n);
-        return SC_EXIT_OK;
+    bench_report(out, j->o->format, j->m, j->rows, j->n);
+    return 0;
+}
+
+static int write_comparison(FILE *out, const report_job *j)
+{
+    return bench_compare(out, j->o->format, j->o->compare, j->a, j->o->compare_b, j->b);
+}
+
+static int write_plot(FILE *out, const report_job *j)
+{
+    return bench_plot_write(out, j->rows, j->n);
+}
+
+/* The report by writer to standard output (path NULL), or whole into the file path */
+static int write_report(const report_job *j, const char *path,
+                        int (*writer)(FILE *, const report_job *))
+{
+    if (!path) {
+        if (writer(stdout, j) == 0)
+            return SC_EXIT_OK;
+        sc_error("bench: out of memory");
+        return SC_EXIT_RUNTIME;
     }
     char err[512];
-    sc_atomic_file *f = sc_atomic_open(o->output, err, sizeof err);
-    if (f) {
-        bench_report(sc_atomic_stream(f), o->format, m, rows, n);
-        if (sc_atomic_commit(f, err, sizeof err) == 0)
-            return SC_EXIT_OK;
-    }
+    sc_atomic_file *f = sc_atomic_open(path, err, sizeof err);
+    errno = 0;
+    if (f && writer(sc_atomic_stream(f), j) != 0) {
+        int errnum = errno; /* of the failed write, or 0: out of memory */
+        sc_atomic_abort(f);
+        snprintf(err, sizeof err, "%s: %s", path, errnum ? strerror(errnum) : "out of memory");
+    } else if (f && sc_atomic_commit(f, err, sizeof err) == 0)
+        return SC_EXIT_OK;
     sc_error("bench: %s", err);
     return SC_EXIT_RUNTIME;
 }
 
+static int compare(options *o, char **argv)
+{
+    o->compare_b = argv[optind];
+    bench_report_file a, b;
+    int status = bench_report_read(o->compare, &a);
+    if (status != SC_EXIT_OK)
+        return status;
+    status = bench_report_read(o->compare_b, &b);
+    if (status == SC_EXIT_OK) {
+        report_job j = {o, NULL, NULL, 0, &a, &b};
+        status = write_report(&j, o->output, write_comparison);
+        bench_report_free(&b);
+    }
+    bench_report_free(&a);
+    return status;
+}
+
 static int run(int argc, char **argv)
 {
-    options o = {{{0}, 0, 0, {0}, 0, {4096, 8388608}, 2, 5, 1}, 0, 0, 0, NULL};
+    options o = {{{0}, 0, 0, {0}, 0, {4096, 8388608}, 2, 5, 1}, 0, 0, 0, NULL, NULL, NULL, NULL};
     int status = parse_options(argc, argv, &o);
     if (status != SC_EXIT_OK)
         return status < 0 ? SC_EXIT_OK : status;
+    if (o.compare)
+        return compare(&o, argv);
     if (o.list) {
         bench_list(stdout, o.format, o.run.kernels, o.run.n_kernels);
         return SC_EXIT_OK;
@@ -249,7 +320,10 @@ static int run(int argc, char **argv)
         sc_error("bench: out of memory");
         return SC_EXIT_RUNTIME;
     }
-    status = write_report(&o, &m, rows, n);
+    report_job j = {&o, &m, rows, n, NULL, NULL};
+    status = write_report(&j, o.output, write_bench);
+    if (status == SC_EXIT_OK && o.plot)
+        status = write_report(&j, o.plot, write_plot);
     free(rows);
     return status;
 }

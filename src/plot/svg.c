@@ -6,6 +6,7 @@
 #include "shadecalc/plot.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "plot/plot_internal.h"
@@ -249,8 +250,74 @@ static void curve_markers(FILE *out, const sc_plot *p, const layout *l, const pl
     }
 }
 
+/* The boxes of the point labels placed so far, so that later labels avoid them. */
+typedef struct {
+    double (*box)[4]; /* left, top, right, bottom */
+    size_t n, max;
+} label_boxes;
+
+static int box_free(const label_boxes *b, const frame *f, const double *box)
+{
+    if (box[0] < f->left || box[2] > f->left + f->width || box[1] < f->top ||
+        box[3] > f->top + f->height)
+        return 0;
+    for (size_t i = 0; i < b->n; i++)
+        if (box[0] < b->box[i][2] && b->box[i][0] < box[2] && box[1] < b->box[i][3] &&
+            b->box[i][1] < box[3])
+            return 0;
+    return 1;
+}
+
+/* The label of a point at (px, py): the first of 16 places beside it (the side towards the
+ * middle of the plot first, then the other; above, below, then a line further each time) whose text
+ * stays in the frame and clear of the labels placed before; the first place if none is. */
+static void place_label(FILE *out, label_boxes *b, const frame *f, double px, double py,
+                        const char *text)
+{
+    enum { PLACES = 16 };
+    /* above and below, one label height (15 pixels) further each time */
+    static const double dys[PLACES / 2] = {-5.0, 14.0, -20.0, 29.0, -35.0, 44.0, -50.0, 59.0};
+    double w = plot_text_width(text), box[4] = {0}, x = 0, y = 0;
+    int inward = px < f->left + f->width / 2.0 ? 1 : -1, side = inward;
+    for (int k = 0; k <= PLACES; k++) {
+        int c = k < PLACES ? k : 0; /* none free: the first place */
+        side = c % 2 ? -inward : inward;
+        x = px + 6.0 * side;
+        y = py + dys[c / 2];
+        box[0] = side > 0 ? x : x - w;
+        box[2] = box[0] + w;
+        box[1] = y - PLOT_FONT_SIZE;
+        box[3] = y + 3.0;
+        if (k == PLACES || box_free(b, f, box))
+            break;
+    }
+    if (b->n < b->max)
+        memcpy(b->box[b->n++], box, sizeof box);
+    fprintf(out,
+            "<text class=\"point-label\" x=\"%.2f\" y=\"%.2f\" text-anchor=\"%s\" "
+            "stroke=\"none\" fill=\"#222\">",
+            x, y, side > 0 ? "start" : "end");
+    plot_xml_text(out, text);
+    fputs("</text>\n", out);
+}
+
+/* A marker at every point of curve s, with its label beside it. */
+static void labelled_points(FILE *out, const sc_plot *p, const layout *l, const plot_axis *x,
+                            const plot_axis *y, int s, label_boxes *b)
+{
+    const sc_plot_series *c = &p->series[s];
+    for (size_t i = 0; i < c->n; i++) {
+        double px, py;
+        if (!curve_point(p, l, x, y, s, i, &px, &py))
+            continue;
+        plot_marker(out, s, px, py);
+        if (c->point_labels[i] && c->point_labels[i][0])
+            place_label(out, b, &l->f, px, py, c->point_labels[i]);
+    }
+}
+
 static void write_series(FILE *out, const sc_plot *p, const layout *l, const plot_axis *x,
-                         const plot_axis *y, int s)
+                         const plot_axis *y, int s, label_boxes *b)
 {
     const sc_plot_series *c = &p->series[s];
     fputs("<g class=\"series\" data-label=\"", out);
@@ -275,7 +342,10 @@ static void write_series(FILE *out, const sc_plot *p, const layout *l, const plo
         open = 1;
     }
     fputs(open ? "\"/>\n" : "", out);
-    curve_markers(out, p, l, x, y, s);
+    if (c->point_labels)
+        labelled_points(out, p, l, x, y, s, b);
+    else
+        curve_markers(out, p, l, x, y, s);
     fputs("</g>\n", out);
     if (p->polar && c->has_incident && isfinite(c->incident_deg))
         incident_arrow(out, l, s, c->incident_deg);
@@ -490,8 +560,14 @@ int sc_plot_write_svg(FILE *out, const sc_plot *p)
         cartesian_axes(out, &l.f, &x, &y);
     if (!p->polar)
         reference_line(out, p, &l.f, &y);
+    label_boxes boxes = {NULL, 0, 0}; /* without memory, labels are placed without avoiding */
     for (int s = 0; s < p->n_series; s++)
-        write_series(out, p, &l, &x, &y, s);
+        boxes.max += p->series[s].point_labels ? p->series[s].n : 0;
+    boxes.box = boxes.max ? malloc(boxes.max * sizeof *boxes.box) : NULL;
+    boxes.max = boxes.box ? boxes.max : 0;
+    for (int s = 0; s < p->n_series; s++)
+        write_series(out, p, &l, &x, &y, s, &boxes);
+    free(boxes.box);
     if (l.legend != LEGEND_NONE)
         write_legend(out, p, &l);
     write_labels(out, p, &l);

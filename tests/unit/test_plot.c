@@ -156,6 +156,63 @@ static void log_axis_drops_what_it_cannot_show(void **state)
     free(text);
 }
 
+/* Point labels: one text per labelled shown point, escaped, on the side of the point that
+ * keeps it inside the frame; a curve without them has none. */
+static void point_labels_mark_every_point(void **state)
+{
+    (void)state;
+    const double x[] = {1, NAN, 10, 100}, y[] = {1, NAN, 3, 2};
+    const char *const labels[] = {"left", NULL, NULL, "b<c"};
+    const sc_plot_series s[] = {{.label = "k", .x = x, .y = y, .n = 4, .point_labels = labels},
+                                {.label = "plain", .x = x, .y = y, .n = 4}};
+    sc_plot p = {.xlog = 1, .ymin = NAN, .ymax = NAN, .series = s, .n_series = 2};
+    char *text = write_to_text(&p);
+    assert_int_equal(count(text, "class=\"point-label\""), 2);
+    const char *left = strstr(text, ">left</text>"), *right = strstr(text, ">b&lt;c</text>");
+    assert_non_null(left);
+    assert_non_null(right);
+    /* the leftmost point's label reads rightwards from it, the rightmost one's leftwards */
+    const char *start = strstr(text, "class=\"point-label\"");
+    assert_true(start < left && strstr(start, "text-anchor=\"start\"") < left);
+    const char *second = strstr(start + 1, "class=\"point-label\"");
+    assert_true(second < right && strstr(second, "text-anchor=\"end\"") < right);
+    free(text);
+}
+
+/* Labels of coinciding points take different places: no two of their boxes (width at most
+ * PLOT_CHAR_WIDTH 7.2 a character, 15 pixels high) intersect. */
+static void point_labels_do_not_overlap(void **state)
+{
+    (void)state;
+    const double x[] = {1, 1, 1, 1, 10}, y[] = {5, 5, 5, 5, 1};
+    const char *const labels[] = {"first", "second", "third", "fourth", "far"};
+    const sc_plot_series s[] = {{.label = "k", .x = x, .y = y, .n = 5, .point_labels = labels}};
+    sc_plot p = {.ymin = NAN, .ymax = NAN, .series = s, .n_series = 1};
+    char *text = write_to_text(&p);
+    double box[4][4];
+    const char *at = text;
+    for (int i = 0; i < 4; i++) {
+        at = strstr(at + 1, "class=\"point-label\"");
+        assert_non_null(at);
+        double tx, ty;
+        char anchor[8];
+        assert_int_equal(sscanf(at,
+                                "class=\"point-label\" x=\"%lf\" y=\"%lf\" text-anchor=\"%5[a-z]",
+                                &tx, &ty, anchor),
+                         3);
+        double w = 7.2 * (double)strlen(labels[i]);
+        box[i][0] = strcmp(anchor, "end") == 0 ? tx - w : tx;
+        box[i][1] = ty - 12.0;
+        box[i][2] = box[i][0] + w;
+        box[i][3] = ty + 3.0;
+    }
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < i; j++)
+            assert_false(box[i][0] < box[j][2] && box[j][0] < box[i][2] && box[i][1] < box[j][3] &&
+                         box[j][1] < box[i][3]);
+    free(text);
+}
+
 /* The polar plot puts value r at angle θ from the vertical: the points of a constant curve lie
  * on one circle about the centre. */
 static void polar_points_lie_on_a_circle(void **state)
@@ -388,6 +445,8 @@ int main(void)
         cmocka_unit_test(log_ticks_are_decades),
         cmocka_unit_test(every_point_is_drawn_and_gaps_break_the_line),
         cmocka_unit_test(log_axis_drops_what_it_cannot_show),
+        cmocka_unit_test(point_labels_mark_every_point),
+        cmocka_unit_test(point_labels_do_not_overlap),
         cmocka_unit_test(polar_points_lie_on_a_circle),
         cmocka_unit_test(fixed_y_range_is_kept),
         cmocka_unit_test(write_failure_is_reported),
