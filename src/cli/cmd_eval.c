@@ -463,6 +463,12 @@ static int worse(int a, int b) { return a > b ? a : b; }
 /* Expressions from standard input, one per line, each printed when computed: a bad line is
  * reported with its number and the rest go on. Constant memory: one line at a time, of at most
  * MAX_LINE bytes (a longer line stops the reading). */
+static int blank_or_comment(const char *line)
+{
+    const char *text = line + strspn(line, " \t");
+    return *text == '\0' || *text == '#';
+}
+
 static int run_stdin(const define_set *d, const eval_options *o)
 {
     enum { MAX_LINE = 1 << 20 };
@@ -478,10 +484,9 @@ static int run_stdin(const define_set *d, const eval_options *o)
     while ((ls = line_reader_next(&r)) != LINE_END) {
         char where[32];
         snprintf(where, sizeof where, "line %ld: ", r.number);
-        const char *text = r.line + strspn(r.line, " \t");
         if (ls != LINE_OK)
             status = worse(status, line_reader_report(&r, ls, "eval: standard input", where));
-        else if (*text != '\0' && *text != '#')
+        else if (!blank_or_comment(r.line))
             status = worse(status, run_line(r.line, where, d, o, &header));
         if (ls != LINE_OK && ls != LINE_HAS_NUL) /* the rest of the input is lost */
             break;

@@ -22,7 +22,18 @@ void line_reader_free(line_reader *r)
 
 /* Reads up to the end of the line or of the input. The limits stop the reading where they are
  * passed, so endless input without a newline (/dev/zero) ends promptly. */
+static line_status read_line(line_reader *r);
+
+/* The line as far as it was read is always a string, whatever the status (the buffer holds
+ * max_line + 1 bytes). */
 line_status line_reader_next(line_reader *r)
+{
+    line_status ls = read_line(r);
+    r->line[r->length] = '\0';
+    return ls;
+}
+
+static line_status read_line(line_reader *r)
 {
     int c, has_nul = 0;
     r->length = 0;
@@ -46,7 +57,6 @@ line_status line_reader_next(line_reader *r)
     r->total += c == '\n';
     if (r->length > 0 && r->line[r->length - 1] == '\r')
         r->length--;
-    r->line[r->length] = '\0';
     return has_nul ? LINE_HAS_NUL : LINE_OK;
 }
 
