@@ -241,20 +241,24 @@ static void check_function(const char *kernel, const void *params, double hi, co
     buffers_release(&b);
 }
 
+/* Parameters at the edges of every attenuation function: a pure quadratic clq, a window with
+ * r_start = r_end (a step), a flat pixar (f_c = f_max), r_max = 5. */
+static const sc_batch_atten_params edge_atten = {.sc = 0.0f,
+                                                 .sl = 0.0f,
+                                                 .sq = 1.0f,
+                                                 .r_start = 5.0f,
+                                                 .r_end = 5.0f,
+                                                 .f_max = 3.0f,
+                                                 .f_c = 3.0f,
+                                                 .r_c = 5.0f,
+                                                 .s_e = 1.5f,
+                                                 .r_max = 5.0f};
+
 static void attenuation_edges(void **state)
 {
     (void)state;
     const float points[] = {0.0f, 0x1p-149f, 1e-3f, 5.0f, 0x1.3ffffep+2f, 0x1.400002p+2f, 10.0f};
-    sc_batch_atten_params p = {.sc = 0.0f,
-                               .sl = 0.0f,
-                               .sq = 1.0f,
-                               .r_start = 5.0f,
-                               .r_end = 5.0f,
-                               .f_max = 3.0f,
-                               .f_c = 3.0f,
-                               .r_c = 5.0f,
-                               .s_e = 1.5f,
-                               .r_max = 5.0f};
+    sc_batch_atten_params p = edge_atten;
     int n = (int)(sizeof points / sizeof points[0]);
     check_function("atten_invsq", &p, 20.0, points, n, "r = 0");
     check_function("atten_clq", &p, 20.0, points, n, "pure quadratic, r = 0");
@@ -271,16 +275,7 @@ static void attenuation_edges(void **state)
 static void attenuation_by_hand(void **state)
 {
     (void)state;
-    sc_batch_atten_params p = {.sc = 0.0f,
-                               .sl = 0.0f,
-                               .sq = 1.0f,
-                               .r_start = 5.0f,
-                               .r_end = 5.0f,
-                               .f_max = 3.0f,
-                               .f_c = 3.0f,
-                               .r_c = 5.0f,
-                               .s_e = 1.5f,
-                               .r_max = 5.0f};
+    sc_batch_atten_params p = edge_atten;
     float r[4] = {0.0f, 5.0f, 0x1.400002p+2f, 20.0f}, out[4];
     sc_batch_args a = {{r}, {out}, 4, NULL, &p};
     assert_int_equal(sc_batch_run("atten_window", "u2", &a), 0);
