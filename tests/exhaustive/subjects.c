@@ -26,31 +26,18 @@ static double bound_exp(float x, float y, double a)
     double ax = fabs((double)x);
     return rel(ax < 694.0 ? 0x1p-47 + 0x1p-51 * ax : 0x1p-47, a);
 }
-static double bound_log(float x, float y, double a)
-{
-    (void)x, (void)y;
-    return rel(0x1p-48, a);
-}
-static double bound_atan(float x, float y, double a)
-{
-    (void)x, (void)y;
-    return rel(0x1p-47, a);
-}
-static double bound_46(float x, float y, double a)
-{
-    (void)x, (void)y;
-    return rel(0x1p-46, a);
-}
-static double bound_sqrt(float x, float y, double a)
-{
-    (void)x, (void)y;
-    return rel(0x1p-53, a);
-}
-static double bound_51(float x, float y, double a)
-{
-    (void)x, (void)y;
-    return rel(0x1p-51, a);
-}
+/* A bound that is one relative error for every input. */
+#define CONSTANT_BOUND(name, e)                                                                    \
+    static double name(float x, float y, double a)                                                 \
+    {                                                                                              \
+        (void)x, (void)y;                                                                          \
+        return rel(e, a);                                                                          \
+    }
+CONSTANT_BOUND(bound_log, 0x1p-48)
+CONSTANT_BOUND(bound_atan, 0x1p-47)
+CONSTANT_BOUND(bound_46, 0x1p-46)
+CONSTANT_BOUND(bound_sqrt, 0x1p-53)
+CONSTANT_BOUND(bound_51, 0x1p-51)
 
 /* sincos.c: the reduction is exact for |x| < 0.78 (k = 0), else r carries 2^-99.7 absolute. */
 static double reduction_error(float x) { return fabsf(x) < 0.78f ? 0.0 : 0x1p-99; }
