@@ -21,6 +21,8 @@
 #include "shadecalc/brdf.h"
 #include "shadecalc/scene.h"
 
+#include "batch/reference_light.h"
+
 enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too */
 
 static const double pi = 3.14159265358979323846;
@@ -101,21 +103,13 @@ static void fill_references(const sc_batch_entry *e, run_buffers *b)
 
 /* ---- BRDFs ---- */
 
+/* The table's test BRDF (GGX, smith-correlated, Schlick, coloured terms) as another model. */
 static sc_batch_brdf_params brdf_params(sc_brdf_kind model, int form, int cos_flag)
 {
-    sc_batch_brdf_params p = {.model = model,
-                              .form = form,
-                              .cos = cos_flag,
-                              .D = SC_D_GGX,
-                              .G = SC_G_SMITH_CORRELATED,
-                              .F = SC_F_SCHLICK,
-                              .diff = {0.8f, 0.5f, 0.2f},
-                              .spec = {0.2f, 0.3f, 0.4f},
-                              .f0 = {0.04f, 0.5f, 0.9f},
-                              .m = 32.0f,
-                              .alpha = 0.3f,
-                              .sigma = 0.5f,
-                              .ior = 1.5f};
+    sc_batch_brdf_params p = sc_batch_test_brdf;
+    p.model = model;
+    p.form = form;
+    p.cos = cos_flag;
     return p;
 }
 
