@@ -229,6 +229,7 @@ COV_VARS  := BUILD=$(COV_BUILD) OPT="-O0 -g" CFLAGS="--coverage -DSC_NO_ALWAYS_I
              LDFLAGS="--coverage"
 COV_INPUTS := SHADECALC_BATCH_INPUTS=10000 SHADECALC_ACCURACY_INPUTS=10000
 coverage: deps
+	@command -v gcovr >/dev/null || { echo "coverage: gcovr is not installed (make deps as root installs it)" >&2; exit 1; }
 	@rm -rf $(COV_BUILD)/obj $(COV_BUILD)/coverage.json
 	@$(MAKE) --no-print-directory -j$(JOBS) $(COV_VARS) test-bins
 	@$(COV_INPUTS) $(MAKE) --no-print-directory $(COV_VARS) unit e2e
