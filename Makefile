@@ -74,12 +74,22 @@ $(BUILD)/obj/bench/sleef_avx2.o: CPPFLAGS += -DSC_HAVE_SLEEF
 BIN_LIBS := $(SLEEF_LIBS)
 endif
 
+# Mesa's llvmpipe, the GLSL ES reference of tests/e2e/test_mesa.sh (tests/mesa/), is built when
+# pkg-config finds EGL and GLES (Debian's libegl-dev, libgles-dev); the test skips without it.
+# Not instrumented by the sanitizers: it is a reference, and Mesa's own allocations would be
+# reported as leaks.
+MESA_LIBS := $(shell pkg-config --libs egl glesv2 2>/dev/null)
+ifneq ($(MESA_LIBS),)
+MESA_EVAL := $(BUILD)/tests/mesa_eval
+endif
+$(BUILD)/tests/mesa_eval: SANFLAGS :=
+
 # The detected configuration (compiler, flags, optional libraries) is kept in a stamp that every
 # object and link depends on: when it changes (libsleef-dev installed, CFLAGS=...), what depends
 # on it is rebuilt without a `make clean`.
 CONFIG_STAMP := $(BUILD)/config.stamp
 CONFIG_TEXT   = $(CC) [$(shell $(CC) --version 2>/dev/null | head -n 1)] $(CPPFLAGS) $(ALLCFLAGS) \
-                $(LDFLAGS) exr[$(EXR_LIBS)] sleef[$(SLEEF_LIBS)] peers[$(FASTMATH)]
+                $(LDFLAGS) exr[$(EXR_LIBS)] sleef[$(SLEEF_LIBS)] peers[$(FASTMATH)] mesa[$(MESA_LIBS)]
 ifneq ($(CONFIG_TEXT),$(file <$(CONFIG_STAMP)))
 $(shell mkdir -p $(BUILD))
 $(file >$(CONFIG_STAMP),$(CONFIG_TEXT))
@@ -151,6 +161,10 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/unit/%.o $(SUP_OBJS) $(STATIC)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDALL) -o $@ $< $(SUP_OBJS) $(STATIC) -lcmocka $(LDLIBS)
 
+$(BUILD)/tests/mesa_eval: $(BUILD)/obj/tests/mesa/mesa_eval.o
+	@mkdir -p $(dir $@)
+	$(CC) $(LDALL) -o $@ $< $(MESA_LIBS)
+
 $(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 	@mkdir -p $(dir $@)
 	$(CC) $(LDALL) -o $@ $< $(STATIC) $(LDLIBS)
@@ -175,7 +189,7 @@ check-fresh:
 	@sh mk/fresh-clone.sh
 
 .PHONY: test-bins
-test-bins: $(UNIT_BINS) $(BIN)
+test-bins: $(UNIT_BINS) $(BIN) $(MESA_EVAL)
 
 unit: $(UNIT_BINS)
 	@sh tests/run-unit.sh $(UNIT_BINS)

@@ -9,12 +9,14 @@
 #   optional   libsleef-dev: `shadecalc bench` times SLEEF's AVX2 functions beside ours.
 #              Without it the build and every test still pass; bench only lacks those rows.
 #              gcovr: only `make coverage` needs it.
+#              libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri: Mesa's llvmpipe through a
+#              surfaceless EGL context, the GLSL ES reference of tests/e2e/test_mesa.sh.
 #
 # As root, every missing package is installed. Otherwise a missing required package is an error
 # and a missing optional one a notice.
 set -eu
 required="libcmocka-dev libopenexr-dev pkg-config clang clang-format libclang-rt-14-dev python3 libmpfr-dev"
-optional="libsleef-dev gcovr"
+optional="libsleef-dev gcovr libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri"
 
 missing() { # PACKAGES...: prints those not installed
     for pkg in "$@"; do
