@@ -22,8 +22,9 @@
  *     the same 0 or +Inf (monotone rounding).
  *
  * Stated bound: <= 1 ULP against the double reference for every binary32. make exhaustive,
- * every binary32 input: exp correctly rounded with its table of one hard case (exp_hard_cases,
- * consulted only when the core lands within its bound of a midpoint).
+ * every binary32 input: exp and exp2 correctly rounded with their tables of one and two hard
+ * cases (exp_hard_cases, exp2_hard_cases, consulted only when the core lands within its bound of
+ * a midpoint).
  */
 #include <math.h>
 
@@ -61,7 +62,18 @@ double sc_k_exp2(double x)
     return sc_k_horner(y, inv_factorial, 14) * sc_k_pow2i((int)k);
 }
 
-double sc_k_exp2_core(float x) { return sc_k_exp2((double)x); }
+/* The hard cases of exp2: make exhaustive found these two over all 2^32 inputs (the core rounds
+ * them the wrong way); values from MPFR at 300 bits: the midpoint's double plus one ULP. */
+static const sc_k_hard_case exp2_hard_cases[] = {
+    {0x3b429d37, 0x1.0087090000001p+0}, /* exp2(0.00296957581) = 1.00206047296524057537 */
+    {0xbcf3a937, 0x1.f58d610000001p-1}, /* exp2(-0.0297437739) = 0.97959426045417786379 */
+};
+
+double sc_k_exp2_core(float x)
+{
+    double r = sc_k_exp2((double)x);
+    return sc_k_near_midpoint(r, 0x1p-47) ? sc_k_lookup_hard(exp2_hard_cases, 2, x, r) : r;
+}
 /* The hard case of exp: make exhaustive found this one over all 2^32 inputs (the core rounds it
  * the wrong way); its value from MPFR at 300 bits: the midpoint's double plus one ULP. */
 static const sc_k_hard_case exp_hard_cases[] = {

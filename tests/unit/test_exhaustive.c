@@ -192,7 +192,7 @@ static void pow_rounds_exact_midpoints(void **state)
     assert_true(sc_powf(-4097.0f, 3.0f) == (float)(-4097.0 * 4097.0 * 4097.0));
 }
 
-/* The inputs of exp, log and atan that make exhaustive found rounded the wrong way (their tables
+/* The inputs of exp, exp2, log and atan that make exhaustive found rounded the wrong way (their tables
  * of hard cases): MPFR's correctly rounded binary32 is the reference. */
 static void check_hard_case(const char *name, uint32_t bits, double bound)
 {
@@ -209,6 +209,8 @@ static void hard_cases_round_correctly(void **state)
 {
     (void)state;
     check_hard_case("exp", 0xc2b2e798, 0x1p-47 + 0x1p-51 * 89.46); /* x = -89.4523315 */
+    check_hard_case("exp2", 0x3b429d37, 0x1p-47);
+    check_hard_case("exp2", 0xbcf3a937, 0x1p-47);
     check_hard_case("log", 0x4c5d65a5, 0x1p-48);
     check_hard_case("log", 0x65d890d3, 0x1p-48);
     check_hard_case("log", 0x6f31a8ec, 0x1p-48);
