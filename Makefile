@@ -7,6 +7,7 @@
 #   src/**/*.c         the library (src/cli/ excluded)
 #   src/simd/avx2/     compiled with -mavx2 -mfma -mf16c   (x86-64 only)
 #   src/simd/sse41/    compiled with -msse4.1              (x86-64 only)
+#   src/simd/avx512/   compiled with -mavx512f -mavx512dq -mfma (x86-64 only)
 #   src/cli/*.c        the shadecalc binary; src/cli/cmd_NAME.c is subcommand NAME
 #   tests/unit/test_*.c   one cmocka binary each, linked with tests/support/*.c
 #   tests/e2e/test_*.sh   end-to-end tests of the binary
@@ -49,6 +50,7 @@ ARCH := $(shell uname -m)
 ifneq ($(filter x86_64 amd64 i686 i386,$(ARCH)),)
 $(BUILD)/obj/src/simd/avx2/%.o: ISAFLAGS := -mavx2 -mfma -mf16c
 $(BUILD)/obj/src/simd/sse41/%.o: ISAFLAGS := -msse4.1
+$(BUILD)/obj/src/simd/avx512/%.o: ISAFLAGS := -mavx512f -mavx512dq -mfma
 $(BUILD)/obj/bench/sleef_avx2.o: ISAFLAGS := -mavx2 -mfma
 $(BUILD)/obj/bench/peak_avx2.o: ISAFLAGS := -mavx2 -mfma
 endif

@@ -2,10 +2,10 @@
  * shadecalc/batch.h — structure-of-arrays kernels over n elements, in named accuracy tiers,
  * for each instruction set, chosen at run time.
  *
- *   sc_isa, sc_isa_name, sc_isa_parse   scalar, sse4.1, avx2
+ *   sc_isa, sc_isa_name, sc_isa_parse   scalar, sse4.1, avx2, avx512
  *   sc_isa_supported                    compiled in and supported by this CPU
  *   sc_isa_active, sc_isa_set           the instruction set the sc_batch_* calls use: the best
- *                                       supported one, or SHADECALC_ISA=scalar|sse4.1|avx2
+ *                                       supported one, or SHADECALC_ISA=scalar|sse4.1|avx2|avx512
  *   sc_batch_table, sc_batch_count      every kernel × tier × instruction set with its stated
  *                                       bound and input domain (the table that drives dispatch,
  *                                       `shadecalc bench`, its --list and the man page)
@@ -36,7 +36,7 @@
 
 SC_BEGIN_DECLS
 
-typedef enum { SC_ISA_SCALAR, SC_ISA_SSE41, SC_ISA_AVX2, SC_ISA_COUNT } sc_isa;
+typedef enum { SC_ISA_SCALAR, SC_ISA_SSE41, SC_ISA_AVX2, SC_ISA_AVX512, SC_ISA_COUNT } sc_isa;
 
 const char *sc_isa_name(sc_isa isa);
 /* 0 on success, -1 on an unknown name */

@@ -8,7 +8,7 @@
 #include "shadecalc/batch.h"
 #include "simd/kernels.h"
 
-static const char *const isa_names[SC_ISA_COUNT] = {"scalar", "sse4.1", "avx2"};
+static const char *const isa_names[SC_ISA_COUNT] = {"scalar", "sse4.1", "avx2", "avx512"};
 
 const char *sc_isa_name(sc_isa isa) { return isa_names[isa]; }
 
@@ -29,6 +29,8 @@ int sc_isa_supported(sc_isa isa)
 #ifdef SC_HAVE_X86
     case SC_ISA_SSE41: return __builtin_cpu_supports("sse4.1");
     case SC_ISA_AVX2: return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    case SC_ISA_AVX512:
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
 #endif
     default: return 0;
     }

@@ -71,7 +71,7 @@ static void usage(FILE *out)
             "      --normals        add N.X N.Y N.Z (the shading normal)\n"
             "  -j, --threads N      threads (default: one per online core)\n"
             "  -p, --precision P    double|highp|mediump|lowp (default highp)\n"
-            "      --isa I          scalar|sse4.1|avx2: the shading kernel's instruction set\n"
+            "      --isa I          scalar|sse4.1|avx2|avx512: the kernels' instruction set\n"
             "                       (default: SHADECALC_ISA, else the best this CPU has)\n"
             "      --tier T         accurate|bits12|bits8: the shading kernel's tier\n"
             "                       (default accurate)\n"
@@ -176,7 +176,7 @@ static int parse_isa(const char *arg)
 {
     sc_isa isa;
     if (sc_isa_parse(arg, &isa) != 0) {
-        sc_error("render: --isa %s: expected scalar, sse4.1 or avx2", arg);
+        sc_error("render: --isa %s: expected scalar, sse4.1, avx2 or avx512", arg);
         return SC_EXIT_USAGE;
     }
     if (sc_isa_set(isa) != 0) {

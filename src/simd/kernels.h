@@ -23,12 +23,14 @@
 #define SC_DECLARE_SCALAR(name) void sc_batch_##name##_scalar(const sc_batch_args *a);
 #define SC_DECLARE_SSE41(name) void sc_batch_##name##_sse41(const sc_batch_args *a);
 #define SC_DECLARE_AVX2(name) void sc_batch_##name##_avx2(const sc_batch_args *a);
+#define SC_DECLARE_AVX512(name) void sc_batch_##name##_avx512(const sc_batch_args *a);
 #define SC_BATCH_ALL_KERNELS(X) SC_BATCH_KERNELS(X) SC_BATCH_KERNELS_TRIG(X) SC_BATCH_KERNELS_LIGHT(X)
 /* clang-format on */
 SC_BATCH_ALL_KERNELS(SC_DECLARE_SCALAR)
 #ifdef SC_HAVE_X86
 SC_BATCH_ALL_KERNELS(SC_DECLARE_SSE41)
 SC_BATCH_ALL_KERNELS(SC_DECLARE_AVX2)
+SC_BATCH_ALL_KERNELS(SC_DECLARE_AVX512)
 #endif
 
 #endif

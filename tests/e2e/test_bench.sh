@@ -23,7 +23,7 @@ then echo "ok   list filtered"; echo pass >>"$E2E_COUNTS"
 else echo "FAIL list filtered: bench --list pow lists other kernels"; echo fail >>"$E2E_COUNTS"
 fi
 expect "bad kernel"    2 '' "error: bench: unknown kernel 'powf' (see 'shadecalc bench --list')" -- bench powf
-expect "bad isa"       2 '' "error: bench: --isa: unknown instruction set 'neon' (scalar, sse4.1, avx2)" -- bench --isa neon
+expect "bad isa"       2 '' "error: bench: --isa: unknown instruction set 'neon' (scalar, sse4.1, avx2, avx512)" -- bench --isa neon
 expect "bad tier"      2 '' "error: bench: --tier: unknown tier 'u7' (see 'shadecalc bench --list')" -- bench --tier u7
 expect "bad n"         2 '' "error: bench: --n 0: expected element counts 1..268435456" -- bench --n 0
 expect "bad repeat"    2 '' "error: bench: --repeat 99: expected an integer 1..64" -- bench --repeat 99

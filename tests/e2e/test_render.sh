@@ -69,7 +69,7 @@ expect "compare dir not creatable" 1 '' "error: render: --output-dir $e2e_tmp/oc
 expect "compare fixes its plan"  2 '' 'error: render: --compare renders its own plan (Gouraud at 1024, 6320, 40000 triangles, Phong at 6320, exact): --shading does not apply' -- render --compare --shading phong
 expect "compare fixes triangles" 2 '' 'error: render: --compare renders its own plan (Gouraud at 1024, 6320, 40000 triangles, Phong at 6320, exact): --triangles does not apply' -- render --compare --triangles 100
 expect "isa scalar"              0 '' '' -- render --size 16x16 --isa scalar -o "$imgdir/isa.exr"
-expect "bad isa"                 2 '' 'error: render: --isa neon: expected scalar, sse4.1 or avx2' -- render --isa neon -o "$imgdir/isa.exr"
+expect "bad isa"                 2 '' 'error: render: --isa neon: expected scalar, sse4.1, avx2 or avx512' -- render --isa neon -o "$imgdir/isa.exr"
 
 # colours beyond the range (issue 11 §7): inf with a warning, never NaN (the SIMD kernel's 0·inf
 # pixels are shaded again by sc_shade)
