@@ -96,15 +96,20 @@ static sc_decimal schubfach(const binary_format *f, uint64_t c, int q)
     return (sc_decimal){closest_of_two(&r, s, open), k};
 }
 
-/* The significand c and exponent q of x (a positive value of the format) by frexp: exact. */
+/* x (positive, a value of the format) as c·2^q: binary64's significand and exponent, shifted
+ * to the format's precision, or to its smallest exponent for a subnormal (exact: x is one of
+ * the format's values). */
 static sc_decimal shortest_binary(const binary_format *f, double x)
 {
-    int e;
-    double m = frexp(x, &e); /* x = m·2^e, m in [1/2, 1) */
-    int q = e - f->precision;
-    if (q < f->q_min)
-        q = f->q_min;
-    return schubfach(f, (uint64_t)ldexp(m, e - q), q);
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    int biased = (int)(bits >> 52);
+    uint64_t c = bits & ((UINT64_C(1) << 52) - 1);
+    int q = biased ? biased - 1075 : -1074;
+    if (biased)
+        c |= UINT64_C(1) << 52;
+    int shift = q + 53 - f->precision < f->q_min ? f->q_min - q : 53 - f->precision;
+    return schubfach(f, c >> shift, q + shift);
 }
 
 /* ---- lowp: k/256, |k| <= 511 ---- */
@@ -150,17 +155,20 @@ sc_decimal sc_shortest_decimal(double x, sc_prec p)
 
 enum { TEXT_MAX = 32 }; /* "-1.2345678901234567e-308" */
 
+static int digit_count(uint64_t d)
+{
+    int n = 1;
+    for (uint64_t power = 10; n < 20 && d >= power; power *= 10)
+        n++;
+    return n;
+}
+
 /* Writes the decimal digits of d (at least one) at out; returns their count. */
 static int write_digits(char *out, uint64_t d)
 {
-    char reversed[20];
-    int n = 0;
-    do {
-        reversed[n++] = (char)('0' + d % 10);
-        d /= 10;
-    } while (d);
-    for (int i = 0; i < n; i++)
-        out[i] = reversed[n - 1 - i];
+    int n = digit_count(d);
+    for (int i = n - 1; i >= 0; i--, d /= 10)
+        out[i] = (char)('0' + d % 10);
     return n;
 }
 
