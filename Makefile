@@ -248,6 +248,11 @@ bench: all
 accuracy: all
 	$(BUILD)/bench/accuracy_table
 
+# sweep against an awk one-liner printing the same curve: ROWS and ROUNDS in BENCH_SWEEP_ARGS.
+.PHONY: bench-sweep
+bench-sweep: all
+	$(BUILD)/bench/sweep_vs_awk $(BIN) $(BENCH_SWEEP_ARGS)
+
 # ---- correct rounding over every binary32 input (tests/exhaustive/, MPFR) ------------------
 # Not part of check: about 1.5 hours of CPU (EXHAUSTIVE_ARGS="--stride 257" for a sample).
 # check runs the same checker on a sample (tests/unit/test_exhaustive.c).
