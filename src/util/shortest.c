@@ -155,21 +155,51 @@ sc_decimal sc_shortest_decimal(double x, sc_prec p)
 
 enum { TEXT_MAX = 32 }; /* "-1.2345678901234567e-308" */
 
+static const uint64_t power_of_ten[20] = {1,
+                                          10,
+                                          100,
+                                          1000,
+                                          10000,
+                                          100000,
+                                          1000000,
+                                          10000000,
+                                          100000000,
+                                          1000000000,
+                                          10000000000,
+                                          100000000000,
+                                          1000000000000,
+                                          10000000000000,
+                                          100000000000000,
+                                          1000000000000000,
+                                          10000000000000000,
+                                          100000000000000000,
+                                          1000000000000000000,
+                                          10000000000000000000u};
+
+/* The number of decimal digits of d, by a binary search over the powers of ten. */
 static int digit_count(uint64_t d)
 {
-    int n = 1;
-    for (uint64_t power = 10; n < 20 && d >= power; power *= 10)
-        n++;
+    int n = 1; /* d >= 10^(n-1) throughout */
+    for (int step = 16; step; step /= 2)
+        if (n + step <= 20 && d >= power_of_ten[n + step - 1])
+            n += step;
     return n;
 }
 
-/* Writes the decimal digits of d (at least one) at out; returns their count. */
-static int write_digits(char *out, uint64_t d)
+/* Writes the n decimal digits of d at out, two at a time from the right. */
+static void write_digits(char *out, uint64_t d, int n)
 {
-    int n = digit_count(d);
-    for (int i = n - 1; i >= 0; i--, d /= 10)
-        out[i] = (char)('0' + d % 10);
-    return n;
+    static const char pairs[] = "00010203040506070809101112131415161718192021222324252627282930"
+                                "31323334353637383940414243444546474849505152535455565758596061"
+                                "6263646566676869707172737475767778798081828384858687888990919293"
+                                "949596979899";
+    char *p = out + n;
+    for (; d >= 100; d /= 100)
+        memcpy(p -= 2, pairs + 2 * (d % 100), 2);
+    if (d >= 10)
+        memcpy(p - 2, pairs + 2 * d, 2);
+    else
+        p[-1] = (char)('0' + d);
 }
 
 /* d1[.d2...]e±XX, the exponent with at least two digits. */
@@ -187,28 +217,31 @@ static int scientific(char *out, const char *digits, int n, int exponent)
     int magnitude = exponent < 0 ? -exponent : exponent;
     if (magnitude < 10)
         out[len++] = '0';
-    return len + write_digits(out + len, (uint64_t)magnitude);
+    int width = digit_count((uint64_t)magnitude);
+    write_digits(out + len, (uint64_t)magnitude, width);
+    return len + width;
 }
 
-/* The digits with the point placed, padded with zeros on either side: -4 <= exponent < 6 or
- * exponent < n (the decimal is digits·10^(exponent - n + 1)). */
+/* The digits with the point placed, padded with zeros on either side (the decimal is
+ * digits·10^(exponent - n + 1)). */
 static int positional(char *out, const char *digits, int n, int exponent)
 {
-    int len = 0;
-    if (exponent < 0) {
+    if (exponent < 0) { /* 0.000ddd */
+        int zeros = -exponent - 1;
         memcpy(out, "0.", 2);
-        len = 2;
-        for (int i = -1; i > exponent; i--)
-            out[len++] = '0';
-        memcpy(out + len, digits, (size_t)n);
-        return len + n;
+        memset(out + 2, '0', (size_t)zeros);
+        memcpy(out + 2 + zeros, digits, (size_t)n);
+        return 2 + zeros + n;
     }
-    for (int i = 0; i <= exponent || i < n; i++) {
-        if (i == exponent + 1)
-            out[len++] = '.';
-        out[len++] = i < n ? digits[i] : '0';
+    if (exponent >= n - 1) { /* ddd000 */
+        memcpy(out, digits, (size_t)n);
+        memset(out + n, '0', (size_t)(exponent + 1 - n));
+        return exponent + 1;
     }
-    return len;
+    memcpy(out, digits, (size_t)exponent + 1); /* dd.ddd */
+    out[exponent + 1] = '.';
+    memcpy(out + exponent + 2, digits + exponent + 1, (size_t)(n - exponent - 1));
+    return n + 1;
 }
 
 /* %g's choice ("%.Pg" with P the digit count), except that integers below 10^6 are written out
@@ -216,7 +249,8 @@ static int positional(char *out, const char *digits, int n, int exponent)
 static int decimal_text(char *out, int negative, sc_decimal d)
 {
     char digits[20];
-    int n = write_digits(digits, d.digits), exponent = d.exponent + n - 1, len = 0;
+    int n = digit_count(d.digits), exponent = d.exponent + n - 1, len = 0;
+    write_digits(digits, d.digits, n);
     if (negative)
         out[len++] = '-';
     int exponential = exponent < -4 || exponent >= (n > 6 ? n : 6);
@@ -240,8 +274,9 @@ int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
     if (x == 0.0 || !isfinite(x))
         len = special_text(text, x);
     else /* a value that is not one of p's has no decimal reading back to it: its own digits */
-        len = decimal_text(text, signbit(x) != 0,
-                           sc_shortest_decimal(x, sc_round(p, x) == x ? p : SC_DOUBLE));
+        len = decimal_text(
+            text, signbit(x) != 0,
+            sc_shortest_decimal(x, p == SC_DOUBLE || sc_round(p, x) == x ? p : SC_DOUBLE));
     if (size > 0) {
         size_t copied = (size_t)len < size ? (size_t)len : size - 1;
         memcpy(buf, text, copied);
