@@ -152,30 +152,33 @@ static uint64_t xorshift(uint64_t *s)
 
 enum { SAMPLES = 1000000 };
 
+/* SAMPLES random bit patterns of binary32 (highp) or binary64 (double); zeros, infinities and
+ * NaNs skipped. */
+static void check_random_values(sc_prec p, uint64_t seed)
+{
+    for (int i = 0; i < SAMPLES; i++) {
+        uint64_t bits = xorshift(&seed);
+        uint32_t high = (uint32_t)(bits >> 32);
+        float f;
+        double x;
+        memcpy(&f, &high, sizeof f);
+        memcpy(&x, &bits, sizeof x);
+        x = p == SC_HIGHP ? f : x;
+        if (x != 0.0 && isfinite(x))
+            check(x, p);
+    }
+}
+
 static void random_binary32_values_print_shortest(void **state)
 {
     (void)state;
-    uint64_t seed = 0x9e3779b97f4a7c15u;
-    for (int i = 0; i < SAMPLES; i++) {
-        uint32_t bits = (uint32_t)(xorshift(&seed) >> 32);
-        float f;
-        memcpy(&f, &bits, sizeof f);
-        if (f != 0.0f && isfinite(f))
-            check(f, SC_HIGHP);
-    }
+    check_random_values(SC_HIGHP, 0x9e3779b97f4a7c15u);
 }
 
 static void random_binary64_values_print_shortest(void **state)
 {
     (void)state;
-    uint64_t seed = 0x2545f4914f6cdd1du;
-    for (int i = 0; i < SAMPLES; i++) {
-        uint64_t bits = xorshift(&seed);
-        double x;
-        memcpy(&x, &bits, sizeof x);
-        if (x != 0.0 && isfinite(x))
-            check(x, SC_DOUBLE);
-    }
+    check_random_values(SC_DOUBLE, 0x2545f4914f6cdd1du);
 }
 
 /* Powers of two (the irregular intervals), subnormals, the extremes, and the neighbours of
