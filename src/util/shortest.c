@@ -32,7 +32,7 @@ static uint64_t round_to_odd(const uint64_t g[2], uint64_t cp)
     return floor | (fraction != 0);
 }
 
-/* ---- Schubfach ([S] figure 7, with the computations of figure 9) ---- */
+/* ---- Schubfach: the skeleton of [S] figure 7, with the computations of figure 9 ---- */
 
 typedef struct {
     int precision; /* significand bits, the implicit one included */
@@ -41,7 +41,7 @@ typedef struct {
 
 static const binary_format binary64 = {53, -1074}, binary32 = {24, -149}, binary16 = {11, -24};
 
-/* 4·x·10^-k, rounded to odd, for x = cb·2^(q-2): the scaled bounds and value of [S] §9.4. */
+/* 4·x·10^-k, rounded to odd, for x = v and Rv's bounds: v̄, v̄l and v̄r of [S] figure 9. */
 typedef struct {
     uint64_t vb, vbl, vbr;
 } scaled_interval;
@@ -74,11 +74,11 @@ static sc_decimal schubfach(const binary_format *f, uint64_t c, int q)
 {
     int open = (int)(c & 1);
     /* At a power of two (but the smallest normal) the step below v is half the step above:
-     * Rv is [v - 2^(q-2), v + 2^(q-1)] (irregular spacing, [S] §5). */
+     * Rv is [v - 2^(q-2), v + 2^(q-1)], the irregular spacing of [S] figure 7. */
     int irregular = c == UINT64_C(1) << (f->precision - 1) && q > f->q_min;
     uint64_t cb = c << 2, cbr = cb + 2, cbl = irregular ? cb - 1 : cb - 2;
-    /* 10^k <= the width of Rv < 10^(k+1) ([S] §6): Rv holds at most one multiple of 10^(k+1)
-     * and at least one multiple of 10^k. */
+    /* k as [S] figure 7 chooses it: 10^k <= the width of Rv < 10^(k+1), so Rv holds at most one
+     * multiple of 10^(k+1) and at least one multiple of 10^k. */
     int k = irregular ? sc_flog10_three_quarters_pow2(q) : sc_flog10_pow2(q);
     int h = q + sc_flog2_pow10(-k) + 2; /* 2 <= h <= 5: cb << h < 2^60 */
     const uint64_t *g = sc_shortest_g[k - SC_SHORTEST_K_MIN];
@@ -86,8 +86,9 @@ static sc_decimal schubfach(const binary_format *f, uint64_t c, int q)
                          round_to_odd(g, cbr << h)};
     uint64_t s = r.vb >> 2; /* floor(v·10^-k) >= 1 */
     if (s >= 10) {
-        /* A multiple of 10^(k+1) inside Rv has fewer digits than every other candidate and is
-         * the only one ([S] §8, theorem 4). With s < 10 both kinds have one digit: skip. */
+        /* u' = 10·floor(s/10)·10^k or w' = u' + 10^(k+1) ([S] §9.3): a multiple of 10^(k+1)
+         * inside Rv has fewer digits than any other candidate and is the only one. With s < 10
+         * both kinds have one digit, and the closest must be chosen among s and s + 1: skip. */
         uint64_t sp10 = s / 10 * 10, tp10 = sp10 + 10;
         int up_in = above_left(&r, sp10, open), wp_in = below_right(&r, tp10, open);
         if (up_in != wp_in)

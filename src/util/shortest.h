@@ -26,8 +26,9 @@ sc_decimal sc_shortest_decimal(double x, sc_prec p);
 
 /* ---- the pieces of [S], exposed for tests/unit/test_shortest.c ---- */
 
-/* floor(log10(2^e)), floor(log10(3/4·2^e)) and floor(log2(10^e)) for |e| <= 5456721 by
- * fixed-point products ([S] §6.2 and the table of §10 give the constants). */
+/* floor(log10(2^e)), floor(log10(3/4·2^e)) and floor(log2(10^e)) by fixed-point products:
+ * the constants are floor(log10(2)·2^41), floor(log10(3/4)·2^41) and floor(log2(10)·2^38).
+ * tests/unit/test_shortest.c checks them exactly over the exponents of the three formats. */
 static inline int sc_flog10_pow2(int e) { return (int)(((int64_t)e * 661971961083LL) >> 41); }
 static inline int sc_flog10_three_quarters_pow2(int e)
 {
@@ -35,7 +36,7 @@ static inline int sc_flog10_three_quarters_pow2(int e)
 }
 static inline int sc_flog2_pow10(int e) { return (int)(((int64_t)e * 913124641741LL) >> 38); }
 
-/* g(k) of [S] §9.8: 10^-k = β·2^r with 2^125 <= β < 2^126 and g = floor(β) + 1, stored as
+/* g(k) of [S] §9.8.3: 10^-k = β·2^r with 2^125 <= β < 2^126 and g = floor(β) + 1, stored as
  * {g1, g0} with g = g1·2^63 + g0 (shortest_table.c, written by mk/gen-shortest-table.py). */
 enum { SC_SHORTEST_K_MIN = -324, SC_SHORTEST_K_MAX = 292 };
 extern const uint64_t sc_shortest_g[SC_SHORTEST_K_MAX - SC_SHORTEST_K_MIN + 1][2];
