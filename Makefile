@@ -264,6 +264,11 @@ bench: all
 accuracy: all
 	$(BUILD)/bench/accuracy_table
 
+# sweep against an awk one-liner printing the same curve: ROWS and ROUNDS in BENCH_SWEEP_ARGS.
+.PHONY: bench-sweep
+bench-sweep: all
+	$(BUILD)/bench/sweep_vs_awk $(BIN) $(BENCH_SWEEP_ARGS)
+
 # ---- correct rounding over every binary32 input (tests/exhaustive/, MPFR) ------------------
 # Not part of check: about 1.5 hours of CPU (EXHAUSTIVE_ARGS="--stride 257" for a sample).
 # check runs the same checker on a sample (tests/unit/test_exhaustive.c).
@@ -280,6 +285,11 @@ $(BUILD)/tests/exhaustive: $(BUILD)/obj/tests/exhaustive/main.o $(EXH_OBJS) $(ST
 $(BUILD)/tests/test_exhaustive: $(EXH_OBJS)
 $(BUILD)/tests/test_exhaustive: SUP_OBJS += $(EXH_OBJS)
 $(BUILD)/tests/test_exhaustive: LDLIBS := $(EXH_LIBS) $(LDLIBS)
+
+# test_shortest runs the checker of `--groups print` (no MPFR) on binary16 and on samples.
+SHORTEST_CHECK := $(call obj,tests/exhaustive/shortest_check.c)
+$(BUILD)/tests/test_shortest: $(SHORTEST_CHECK)
+$(BUILD)/tests/test_shortest: SUP_OBJS += $(SHORTEST_CHECK)
 
 # ---- install -----------------------------------------------------------------
 LIBDIR := $(DESTDIR)$(PREFIX)/lib

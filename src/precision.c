@@ -1,11 +1,11 @@
-/* Precision emulation: binary16 and lowp rounding, ULP measure, shortest decimals (docs/formulas.md §9). */
+/* Precision emulation: binary16 and lowp rounding, ULP measure, bit patterns (docs/formulas.md §9);
+ * the shortest decimals are in util/shortest.c. */
 #include "shadecalc/precision.h"
 
 #include <float.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 static const char *const prec_names[] = {"double", "highp", "mediump", "lowp"};
@@ -114,58 +114,6 @@ double sc_ulp_error(sc_prec p, double got, double exact)
     if (isinf(got) || isinf(exact))
         return got == exact ? 0.0 : INFINITY;
     return fabs(got - exact) / sc_prec_ulp(p, exact);
-}
-
-/* %.*g with few digits writes 30 as "3e+01" (exponent >= digits); below 10^6 the digits are
- * written out instead ("30", "150"), as %g does with its six. Returns -1 to keep g as it is. */
-static int plain_integer(char *buf, size_t size, const char *g)
-{
-    const char *e = strchr(g, 'e');
-    int exponent = e ? atoi(e + 1) : -1, digits = 0;
-    if (exponent < 0 || exponent >= 6)
-        return -1;
-    char out[16];
-    size_t n = 0;
-    for (const char *c = g; c < e; c++)
-        if (*c != '.') {
-            out[n++] = *c;
-            digits += *c != '-';
-        }
-    while (digits++ <= exponent)
-        out[n++] = '0';
-    out[n] = '\0';
-    return snprintf(buf, size, "%s", out);
-}
-
-/* 1 if x printed with `digits` significant digits reads back as x in precision p (into tmp) */
-static int round_trips(char *tmp, size_t size, double x, sc_prec p, int digits)
-{
-    snprintf(tmp, size, "%.*g", digits, x);
-    double back = strtod(tmp, NULL);
-    /* lowp saturates: a decimal beyond its range would read back only by saturation */
-    return sc_round(p, back) == x && (p != SC_LOWP || fabs(back) <= SC_LOWP_MAX + 0x1p-9);
-}
-
-/* The fewest digits that read back, by bisection: reading back is monotonic in the digit count
- * (more digits are never farther from x). binary32 and binary16 need at most 9, binary64 17. */
-int sc_format_shortest(char *buf, size_t size, double x, sc_prec p)
-{
-    if (isnan(x))
-        return snprintf(buf, size, "nan");
-    if (isinf(x))
-        return snprintf(buf, size, x < 0 ? "-inf" : "inf");
-    char tmp[64];
-    int lo = 1, hi = p == SC_HIGHP || p == SC_MEDIUMP ? 9 : 17;
-    while (lo < hi) {
-        int mid = (lo + hi) / 2;
-        if (round_trips(tmp, sizeof tmp, x, p, mid))
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    round_trips(tmp, sizeof tmp, x, p, lo);
-    int plain = plain_integer(buf, size, tmp);
-    return plain >= 0 ? plain : snprintf(buf, size, "%s", tmp);
 }
 
 int sc_format_bits(char *buf, size_t size, double x, sc_prec p)

@@ -62,19 +62,39 @@ static int append_json_name(char *buf, size_t size, size_t *n, const char *name)
     return bad ? -1 : append(buf, size, n, "\": ");
 }
 
+/* Appends one character at *n; -1 once it no longer fits. */
+static int append_char(char *buf, size_t size, size_t *n, char c)
+{
+    if (*n + 1 >= size)
+        return -1;
+    buf[(*n)++] = c;
+    buf[*n] = '\0';
+    return 0;
+}
+
+/* Appends the shortest decimal of x (sc_format_shortest) at *n; -1 once it no longer fits. */
+static int append_number(char *buf, size_t size, size_t *n, double x, sc_prec p)
+{
+    int len = sc_format_shortest(buf + *n, size - *n, x, p);
+    if (len < 0 || (size_t)len >= size - *n)
+        return -1;
+    *n += (size_t)len;
+    return 0;
+}
+
 static int append_value(char *buf, size_t size, size_t *n, const sc_sweep_table *t, int k, double x,
                         sc_prec p)
 {
-    char number[NUMBER_MAX];
-    sc_format_shortest(number, sizeof number, x, p);
-    if (t->format != SC_SWEEP_JSONL) {
-        const char sep[2] = {k ? separator(t) : '\0', '\0'};
-        return append(buf, size, n, "%s%s", sep, number);
-    }
+    if (t->format != SC_SWEEP_JSONL)
+        return (k && append_char(buf, size, n, separator(t)) < 0)
+                   ? -1
+                   : append_number(buf, size, n, x, p);
     if (append(buf, size, n, k ? ", " : "{") < 0 || append_json_name(buf, size, n, t->names[k]))
         return -1;
-    int quoted = !(x - x == 0.0); /* JSON has no NaN or infinity */
-    return append(buf, size, n, quoted ? "\"%s\"" : "%s", number);
+    const char *quote = x - x == 0.0 ? "" : "\""; /* JSON has no NaN or infinity */
+    if (append(buf, size, n, "%s", quote) < 0 || append_number(buf, size, n, x, p) < 0)
+        return -1;
+    return append(buf, size, n, "%s", quote);
 }
 
 int sc_sweep_format_row(char *buf, size_t size, const sc_sweep_table *t, const double *vars,
@@ -87,7 +107,8 @@ int sc_sweep_format_row(char *buf, size_t size, const sc_sweep_table *t, const d
         if (append_value(buf, size, &n, t, k, x, is_var ? SC_DOUBLE : t->prec) < 0)
             return -1;
     }
-    if (append(buf, size, &n, t->format == SC_SWEEP_JSONL ? "}\n" : "\n") < 0)
+    if ((t->format == SC_SWEEP_JSONL && append_char(buf, size, &n, '}') < 0) ||
+        append_char(buf, size, &n, '\n') < 0)
         return -1;
     return (int)n;
 }

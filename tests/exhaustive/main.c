@@ -1,11 +1,12 @@
 /* make exhaustive: every binary32 input of each one-argument highp built-in and u1 batch kernel,
  * >= 10^9 biased pairs of pow and atan2, and every binary16 input of mediump and lowp, checked
- * against the correctly rounded result (checker.h). Each subject's misses go to
+ * against the correctly rounded result (checker.h); every binary32 printed as the shortest
+ * decimal that reads back (group print, shortest_check.h). Each subject's misses go to
  * OUTDIR/<name>.txt, the summary to OUTDIR/summary.txt. --audit sends every input to MPFR too
  * (slow: for samples), which checks the stated bounds themselves.
  *
  * usage: exhaustive [--threads N] [--stride S] [--range LO HI] [--pairs N] [--audit]
- *                   [--only NAME,...] [--groups highp,batch,pairs,half] [--outdir DIR]
+ *                   [--only NAME,...] [--groups highp,batch,pairs,half,print] [--outdir DIR]
  * Exit status 0: every highp one-argument result correctly rounded, no result beyond its stated
  * bound, and the checker's premises held (cores, bounds); 1 otherwise; 2 on a usage error. */
 #include <errno.h>
@@ -19,6 +20,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "shortest_check.h"
 #include "subjects.h"
 
 typedef struct {
@@ -69,7 +71,7 @@ static int usage(const char *msg, const char *arg)
     fprintf(stderr,
             "exhaustive: %s%s%s\nusage: exhaustive [--threads N] [--stride S] "
             "[--range LO HI] [--pairs N] [--audit] [--only NAME,...] "
-            "[--groups highp,batch,pairs,half] [--outdir DIR]\n",
+            "[--groups highp,batch,pairs,half,print] [--outdir DIR]\n",
             msg, arg ? ": " : "", arg ? arg : "");
     return 2;
 }
@@ -84,7 +86,7 @@ static int parse_args(int argc, char **argv, options *o)
                    1ULL << 32,
                    1000000000ULL,
                    NULL,
-                   "highp,batch,pairs,half",
+                   "highp,batch,pairs,half,print",
                    "build/exhaustive"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -216,6 +218,22 @@ static void run_batch(const options *o, const exh_run_spec *ones, report *r)
             run_subject(&subjects[i], ones, o, subjects[i].entry->bound_ulp, 0, r);
 }
 
+/* sc_format_shortest over the binary32 inputs of the run (--range, --stride). */
+static void run_print(const options *o, const exh_run_spec *ones, report *r)
+{
+    char why[256], line[640];
+    double t0 = now();
+    uint64_t failures = shortest_check_binary32(ones->first, ones->count, ones->stride, o->threads,
+                                                why, sizeof why);
+    snprintf(line, sizeof line,
+             "%-22s binary32 inputs %llu  not the shortest decimal reading back %llu  %.0f s%s%s\n",
+             "print highp", (unsigned long long)ones->count, (unsigned long long)failures,
+             now() - t0, failures ? "  first: " : "", failures ? why : "");
+    both(r, line);
+    if (failures)
+        r->failed = 1;
+}
+
 static void describe_run(report *r, int argc, char **argv, const options *o)
 {
     char line[1024];
@@ -254,6 +272,8 @@ int main(int argc, char **argv)
     run_highp(&o, &ones, &r);
     if (listed(o.groups, "batch"))
         run_batch(&o, &ones, &r);
+    if (listed(o.groups, "print"))
+        run_print(&o, &ones, &r);
     char line[128];
     snprintf(line, sizeof line, "# wall time %.0f s: %s\n", now() - t0,
              r.failed ? "FAILED" : "passed");

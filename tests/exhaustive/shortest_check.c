@@ -1,0 +1,200 @@
+/* The checker of the shortest decimals (shortest_check.h). */
+#include "shortest_check.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { TEXT = 64 };
+
+/* A decimal m·10^scale. */
+typedef struct {
+    uint64_t m;
+    int scale;
+} decimal;
+
+static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* Whether the text s reads back to x in p (lowp: without relying on its saturation). */
+static int reads_back(const char *s, double x, sc_prec p)
+{
+    double back = strtod(s, NULL);
+    if (!same_bits(sc_round(p, back), x))
+        return 0;
+    if (p == SC_HIGHP && !same_bits((double)strtof(s, NULL), x))
+        return 0;
+    return p != SC_LOWP || fabs(back) <= SC_LOWP_MAX + 0x1p-9;
+}
+
+static int decimal_reads_back(decimal d, double x, sc_prec p)
+{
+    char s[TEXT];
+    snprintf(s, sizeof s, "%s%llue%d", signbit(x) ? "-" : "", (unsigned long long)d.m, d.scale);
+    return reads_back(s, x, p);
+}
+
+static decimal normalized(decimal d)
+{
+    while (d.m && d.m % 10 == 0) {
+        d.m /= 10;
+        d.scale++;
+    }
+    return d;
+}
+
+static int equal(decimal a, decimal b)
+{
+    a = normalized(a);
+    b = normalized(b);
+    return a.m == b.m && a.scale == b.scale;
+}
+
+static int digit_count(uint64_t m)
+{
+    int n = 1;
+    while (m >= 10) {
+        m /= 10;
+        n++;
+    }
+    return n;
+}
+
+/* The value of a decimal text ("-0.0125", "1.5e-07", "30") as digits and a scale, exactly. */
+static decimal value_of(const char *s)
+{
+    decimal d = {0, 0};
+    int after_point = 0;
+    for (s += *s == '-'; *s && *s != 'e'; s++) {
+        if (*s == '.') {
+            after_point = 1;
+            continue;
+        }
+        d.m = d.m * 10 + (uint64_t)(*s - '0');
+        d.scale -= after_point;
+    }
+    if (*s == 'e')
+        d.scale += atoi(s + 1);
+    return d;
+}
+
+/* |x| correctly rounded to n significant digits (n >= 1). */
+static decimal rounded(double x, int n)
+{
+    char s[TEXT];
+    snprintf(s, sizeof s, "%.*e", n - 1, fabs(x));
+    return value_of(s);
+}
+
+/* The n-digit decimals next to r (an n-digit rounding of x) on either side: r ± one unit, and
+ * below a power of ten the finer neighbour 10·r − 1 one scale down. */
+static int neighbours(decimal r, int n, decimal out[3])
+{
+    int k = 0;
+    out[k++] = (decimal){r.m + 1, r.scale};
+    if (r.m > 1)
+        out[k++] = (decimal){r.m - 1, r.scale};
+    uint64_t power = 1;
+    for (int i = 1; i < n; i++)
+        power *= 10;
+    if (r.m == power)
+        out[k++] = (decimal){10 * r.m - 1, r.scale - 1};
+    return k;
+}
+
+static int fail(char *why, size_t size, double x, const char *s, const char *what, decimal d)
+{
+    snprintf(why, size, "%a printed %s: %s %llue%d", x, s, what, (unsigned long long)d.m, d.scale);
+    return -1;
+}
+
+/* Whether s is laid out as %g lays out its value with its digit count n, except that an
+ * integer below 10^6 is written out (%.0f) where %g would switch to an exponent. The value is
+ * read as a long double, whose 64 bits hold any decimal of at most 17 digits closely enough
+ * that %.{n}Lg gives back its digits. */
+static int laid_out_as_g(const char *s, int n)
+{
+    char g[TEXT];
+    long double v = strtold(s, NULL);
+    snprintf(g, sizeof g, "%.*Lg", n, v);
+    const char *e = strchr(g, 'e');
+    if (e && atoi(e + 1) >= 0 && atoi(e + 1) < 6)
+        snprintf(g, sizeof g, "%.0Lf", v);
+    return strcmp(s, g) == 0;
+}
+
+int shortest_check(double x, sc_prec p, char *why, size_t why_size)
+{
+    char s[TEXT];
+    sc_format_shortest(s, sizeof s, x, p);
+    decimal got = normalized(value_of(s));
+    if (!reads_back(s, x, p) || (s[0] == '-') != (signbit(x) != 0))
+        return fail(why, why_size, x, s, "does not read back as", got);
+    int n = digit_count(got.m);
+    if (!laid_out_as_g(s, n))
+        return fail(why, why_size, x, s, "not laid out as %g would write", got);
+    if (n > 1) {
+        decimal shorter[4] = {rounded(x, n - 1)};
+        int count = 1 + neighbours(shorter[0], n - 1, shorter + 1);
+        for (int i = 0; i < count; i++)
+            if (decimal_reads_back(shorter[i], x, p))
+                return fail(why, why_size, x, s, "a shorter decimal reads back:", shorter[i]);
+    }
+    decimal closest = rounded(x, n);
+    if (decimal_reads_back(closest, x, p))
+        return equal(got, closest) ? 0 : fail(why, why_size, x, s, "the closer is", closest);
+    decimal other[3];
+    int count = neighbours(closest, n, other);
+    for (int i = 0; i < count; i++)
+        if (equal(got, other[i]))
+            return 0;
+    return fail(why, why_size, x, s, "not next to x; the closest is", closest);
+}
+
+typedef struct {
+    uint64_t first, count, stride, failures;
+    int worker, threads;
+    char why[256];
+} binary32_share;
+
+static void *check_share(void *arg)
+{
+    binary32_share *w = arg;
+    for (uint64_t i = (uint64_t)w->worker; i < w->count; i += (uint64_t)w->threads) {
+        uint32_t bits = (uint32_t)(w->first + i * w->stride);
+        float f;
+        memcpy(&f, &bits, sizeof f);
+        char why[256];
+        if (f != 0.0f && isfinite(f) && shortest_check(f, SC_HIGHP, why, sizeof why) != 0 &&
+            w->failures++ == 0)
+            memcpy(w->why, why, sizeof why);
+    }
+    return NULL;
+}
+
+uint64_t shortest_check_binary32(uint64_t first, uint64_t count, uint64_t stride, int threads,
+                                 char *why, size_t why_size)
+{
+    binary32_share *shares = calloc((size_t)threads, sizeof *shares);
+    pthread_t *ids = calloc((size_t)threads, sizeof *ids);
+    uint64_t failures = 0;
+    snprintf(why, why_size, "%s", shares && ids ? "" : "out of memory");
+    int started = 0;
+    for (; shares && ids && started < threads; started++) {
+        shares[started] = (binary32_share){first, count, stride, 0, started, threads, ""};
+        if (pthread_create(&ids[started], NULL, check_share, &shares[started]) != 0)
+            break;
+    }
+    for (int i = 0; i < started; i++) {
+        pthread_join(ids[i], NULL);
+        if (shares[i].failures && failures == 0)
+            snprintf(why, why_size, "%s", shares[i].why);
+        failures += shares[i].failures;
+    }
+    if (started < threads && why[0] == '\0')
+        snprintf(why, why_size, "cannot start thread %d", started + 1);
+    free(shares);
+    free(ids);
+    return started < threads ? failures + 1 : failures;
+}

@@ -1,0 +1,30 @@
+/* The checker of the shortest decimals (sc_format_shortest, src/util/shortest.c), independent of
+ * the algorithm: glibc's correctly rounded printf("%.*e") and strtod/strtof decide.
+ *
+ * A decimal of L significant digits passes for x in precision p when
+ *   - it reads back: sc_round(p, strtod(s)) is x, bit for bit (for highp strtof(s) too);
+ *   - no decimal of L - 1 digits reads back. Any shorter decimal can be written with L - 1
+ *     digits, and the only candidates are the two (L - 1)-digit decimals around x: %.{L-2}e
+ *     gives one, its neighbours the other (below a power of ten the grid is ten times finer);
+ *   - it is the closest of its length: %.{L-1}e of x (ties to even, as the printed one) if
+ *     that reads back, otherwise the L-digit neighbour on the other side of x.
+ * make exhaustive runs it over every binary32 (--groups print), make check over every binary16
+ * and samples of binary32 and binary64 (tests/unit/test_shortest.c). */
+#ifndef SHADECALC_EXHAUSTIVE_SHORTEST_CHECK_H
+#define SHADECALC_EXHAUSTIVE_SHORTEST_CHECK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "shadecalc/precision.h"
+
+/* 0 if sc_format_shortest(x, p) passes; else -1 with the reason in why. x: a finite, nonzero
+ * value of p. */
+int shortest_check(double x, sc_prec p, char *why, size_t why_size);
+
+/* Checks every `stride`-th binary32 bit pattern from `first` (count of them) on `threads`
+ * threads; returns the number of failures and keeps the first one's reason in why. */
+uint64_t shortest_check_binary32(uint64_t first, uint64_t count, uint64_t stride, int threads,
+                                 char *why, size_t why_size);
+
+#endif
