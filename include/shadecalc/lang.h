@@ -87,9 +87,8 @@ typedef void (*sc_lang_domain_fn)(void *user, int line, int column, const char *
 /* Runs the program in precision p (inputs rounded to p). Returns 0; -1 on a runtime error (too
  * many loop iterations, an index out of range, a function ending without `return`, out of
  * memory) with *err filled; 1 if emit asked to stop. */
-int sc_program_run(const sc_program *prog, sc_prec p, const sc_lvalue *inputs,
-                   sc_lang_emit_fn emit, sc_lang_domain_fn on_domain, void *user,
-                   sc_lang_error *err);
+int sc_program_run(const sc_program *prog, sc_prec p, const sc_lvalue *inputs, sc_lang_emit_fn emit,
+                   sc_lang_domain_fn on_domain, void *user, sc_lang_error *err);
 
 SC_END_DECLS
 

@@ -16,8 +16,8 @@ typedef struct {
     sc_prec prec;
     int format;
     int hex, ulp, strict;
-    const char *file;     /* --file, or NULL */
-    long max_iterations;  /* --max-iterations */
+    const char *file;    /* --file, or NULL */
+    long max_iterations; /* --max-iterations */
 } eval_options;
 
 /* -D NAME=EXPR: its value in the chosen precision and in the double reference. */

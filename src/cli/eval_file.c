@@ -18,8 +18,8 @@ static char *read_source(FILE *in, const char *name)
         if (len + 1 >= cap) {
             char *bigger = cap >= MAX_SOURCE ? NULL : realloc(buf, cap * 2);
             if (!bigger) {
-                sc_error("eval: %s: %s", name, cap >= MAX_SOURCE ? "longer than 16 MiB"
-                                                                  : "out of memory");
+                sc_error("eval: %s: %s", name,
+                         cap >= MAX_SOURCE ? "longer than 16 MiB" : "out of memory");
                 break;
             }
             buf = bigger, cap *= 2;

@@ -11,25 +11,63 @@
 #include "lang/lang_internal.h"
 
 typedef enum {
-    F_LT, F_LE, F_GT, F_GE, F_EQ, F_NE, F_ANY, F_ALL, F_NOT, F_ABS, F_SIGN, F_MIN, F_MAX,
-    F_CLAMP, F_ISNAN, F_ISINF, F_FLOAT_TO_INT, F_FLOAT_TO_UINT, F_INT_TO_FLOAT, F_UINT_TO_FLOAT,
-    F_PACK_SNORM, F_UNPACK_SNORM, F_PACK_UNORM, F_UNPACK_UNORM, F_PACK_HALF, F_UNPACK_HALF
+    F_LT,
+    F_LE,
+    F_GT,
+    F_GE,
+    F_EQ,
+    F_NE,
+    F_ANY,
+    F_ALL,
+    F_NOT,
+    F_ABS,
+    F_SIGN,
+    F_MIN,
+    F_MAX,
+    F_CLAMP,
+    F_ISNAN,
+    F_ISINF,
+    F_FLOAT_TO_INT,
+    F_FLOAT_TO_UINT,
+    F_INT_TO_FLOAT,
+    F_UINT_TO_FLOAT,
+    F_PACK_SNORM,
+    F_UNPACK_SNORM,
+    F_PACK_UNORM,
+    F_UNPACK_UNORM,
+    F_PACK_HALF,
+    F_UNPACK_HALF
 } family;
 
 static const struct {
     const char *name;
     family f;
 } table[] = {
-    {"lessThan", F_LT},          {"lessThanEqual", F_LE},       {"greaterThan", F_GT},
-    {"greaterThanEqual", F_GE},  {"equal", F_EQ},               {"notEqual", F_NE},
-    {"any", F_ANY},              {"all", F_ALL},                {"not", F_NOT},
-    {"abs", F_ABS},              {"sign", F_SIGN},              {"min", F_MIN},
-    {"max", F_MAX},              {"clamp", F_CLAMP},            {"isnan", F_ISNAN},
-    {"isinf", F_ISINF},          {"floatBitsToInt", F_FLOAT_TO_INT},
-    {"floatBitsToUint", F_FLOAT_TO_UINT}, {"intBitsToFloat", F_INT_TO_FLOAT},
-    {"uintBitsToFloat", F_UINT_TO_FLOAT}, {"packSnorm2x16", F_PACK_SNORM},
-    {"unpackSnorm2x16", F_UNPACK_SNORM},  {"packUnorm2x16", F_PACK_UNORM},
-    {"unpackUnorm2x16", F_UNPACK_UNORM},  {"packHalf2x16", F_PACK_HALF},
+    {"lessThan", F_LT},
+    {"lessThanEqual", F_LE},
+    {"greaterThan", F_GT},
+    {"greaterThanEqual", F_GE},
+    {"equal", F_EQ},
+    {"notEqual", F_NE},
+    {"any", F_ANY},
+    {"all", F_ALL},
+    {"not", F_NOT},
+    {"abs", F_ABS},
+    {"sign", F_SIGN},
+    {"min", F_MIN},
+    {"max", F_MAX},
+    {"clamp", F_CLAMP},
+    {"isnan", F_ISNAN},
+    {"isinf", F_ISINF},
+    {"floatBitsToInt", F_FLOAT_TO_INT},
+    {"floatBitsToUint", F_FLOAT_TO_UINT},
+    {"intBitsToFloat", F_INT_TO_FLOAT},
+    {"uintBitsToFloat", F_UINT_TO_FLOAT},
+    {"packSnorm2x16", F_PACK_SNORM},
+    {"unpackSnorm2x16", F_UNPACK_SNORM},
+    {"packUnorm2x16", F_PACK_UNORM},
+    {"unpackUnorm2x16", F_UNPACK_UNORM},
+    {"packHalf2x16", F_PACK_HALF},
     {"unpackHalf2x16", F_UNPACK_HALF},
 };
 enum { N_TABLE = (int)(sizeof table / sizeof table[0]) };
@@ -79,16 +117,25 @@ static sc_ltype signature(family f, const sc_ltype *a, int n)
     sc_ltype uint1 = sc_lt(SC_KIND_UINT, 1, 1);
     int one = n == 1, two = n == 2 && sc_lt_equal(a[0], a[1]);
     switch (f) {
-    case F_LT: case F_LE: case F_GT: case F_GE:
+    case F_LT:
+    case F_LE:
+    case F_GT:
+    case F_GE:
         return two && sc_lt_is_vector(a[0]) && a[0].kind != SC_KIND_BOOL
-                   ? with_kind(a[0], SC_KIND_BOOL) : none;
-    case F_EQ: case F_NE: return two && sc_lt_is_vector(a[0]) ? with_kind(a[0], SC_KIND_BOOL) : none;
-    case F_ANY: case F_ALL: return one && one_of(a[0], SC_KIND_BOOL, 1) ? sc_lt(SC_KIND_BOOL, 1, 1) : none;
+                   ? with_kind(a[0], SC_KIND_BOOL)
+                   : none;
+    case F_EQ:
+    case F_NE: return two && sc_lt_is_vector(a[0]) ? with_kind(a[0], SC_KIND_BOOL) : none;
+    case F_ANY:
+    case F_ALL: return one && one_of(a[0], SC_KIND_BOOL, 1) ? sc_lt(SC_KIND_BOOL, 1, 1) : none;
     case F_NOT: return one && one_of(a[0], SC_KIND_BOOL, 1) ? a[0] : none;
-    case F_ABS: case F_SIGN: return one && one_of(a[0], SC_KIND_INT, 0) ? a[0] : none;
-    case F_MIN: case F_MAX: return n == 2 && integer_bounds(a, 2) ? a[0] : none;
+    case F_ABS:
+    case F_SIGN: return one && one_of(a[0], SC_KIND_INT, 0) ? a[0] : none;
+    case F_MIN:
+    case F_MAX: return n == 2 && integer_bounds(a, 2) ? a[0] : none;
     case F_CLAMP: return n == 3 && integer_bounds(a, 3) ? a[0] : none;
-    case F_ISNAN: case F_ISINF:
+    case F_ISNAN:
+    case F_ISINF:
         return one && one_of(a[0], SC_KIND_FLOAT, 0) ? with_kind(a[0], SC_KIND_BOOL) : none;
     case F_FLOAT_TO_INT:
         return one && one_of(a[0], SC_KIND_FLOAT, 0) ? with_kind(a[0], SC_KIND_INT) : none;
@@ -98,8 +145,9 @@ static sc_ltype signature(family f, const sc_ltype *a, int n)
         return one && one_of(a[0], SC_KIND_INT, 0) ? with_kind(a[0], SC_KIND_FLOAT) : none;
     case F_UINT_TO_FLOAT:
         return one && one_of(a[0], SC_KIND_UINT, 0) ? with_kind(a[0], SC_KIND_FLOAT) : none;
-    case F_PACK_SNORM: case F_PACK_UNORM: case F_PACK_HALF:
-        return one && sc_lt_equal(a[0], vec2) ? uint1 : none;
+    case F_PACK_SNORM:
+    case F_PACK_UNORM:
+    case F_PACK_HALF: return one && sc_lt_equal(a[0], vec2) ? uint1 : none;
     default: return one && sc_lt_equal(a[0], uint1) ? vec2 : none;
     }
 }
@@ -190,7 +238,8 @@ static double component(family f, sc_prec p, const double *a)
     case F_NOT: return a[0] == 0.0;
     case F_FLOAT_TO_INT: return sc_int_wrap_bits(SC_KIND_INT, 32, float_bits(a[0]));
     case F_FLOAT_TO_UINT: return float_bits(a[0]);
-    case F_INT_TO_FLOAT: case F_UINT_TO_FLOAT: return sc_round(p, bits_float(a[0]));
+    case F_INT_TO_FLOAT:
+    case F_UINT_TO_FLOAT: return sc_round(p, bits_float(a[0]));
     default: return relational(f, a[0], a[1]);
     }
 }

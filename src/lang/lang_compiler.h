@@ -14,9 +14,27 @@ typedef enum { T_END, T_INT, T_UINT, T_FLOAT, T_IDENT, T_PUNCT, T_BAD } tkind;
 
 /* Multi-character operators (single characters are their own code). */
 enum {
-    P_SHL = 256, P_SHR, P_LE, P_GE, P_EQ, P_NE, P_AND, P_OR, P_XOR, P_INC, P_DEC,
-    P_ADD_ASSIGN, P_SUB_ASSIGN, P_MUL_ASSIGN, P_DIV_ASSIGN, P_MOD_ASSIGN, P_SHL_ASSIGN,
-    P_SHR_ASSIGN, P_AND_ASSIGN, P_OR_ASSIGN, P_XOR_ASSIGN
+    P_SHL = 256,
+    P_SHR,
+    P_LE,
+    P_GE,
+    P_EQ,
+    P_NE,
+    P_AND,
+    P_OR,
+    P_XOR,
+    P_INC,
+    P_DEC,
+    P_ADD_ASSIGN,
+    P_SUB_ASSIGN,
+    P_MUL_ASSIGN,
+    P_DIV_ASSIGN,
+    P_MOD_ASSIGN,
+    P_SHL_ASSIGN,
+    P_SHR_ASSIGN,
+    P_AND_ASSIGN,
+    P_OR_ASSIGN,
+    P_XOR_ASSIGN
 };
 
 typedef struct {
@@ -24,8 +42,8 @@ typedef struct {
     const char *start;
     int len;
     int line, column;
-    int punct;      /* T_PUNCT: the character or P_ code */
-    double num;     /* T_INT, T_UINT (exact), T_FLOAT */
+    int punct;       /* T_PUNCT: the character or P_ code */
+    double num;      /* T_INT, T_UINT (exact), T_FLOAT */
     const char *msg; /* T_BAD: what is wrong */
 } ltoken;
 
@@ -117,13 +135,15 @@ const char *type_str(sc_ltype t, char *buf);
 
 /* ---- emitting (lang_expr.c) ---- */
 int alloc_regs(compiler *cs, int n);
+/* A register holding a constant (rounded or wrapped to the precision when a run starts). */
+int const_reg(compiler *cs, sc_kind kind, double value);
 int emit(compiler *cs, insn in);
 int emit_at(compiler *cs, const ltoken *t, int op, int dst, int a, int b, int c, int n);
 void patch_chain(compiler *cs, int chain, int target);
 int here(const compiler *cs);
 
 /* ---- expressions (lang_expr.c) ---- */
-int parse_expression(compiler *cs, operand *out);   /* with the comma operator */
+int parse_expression(compiler *cs, operand *out); /* with the comma operator */
 int parse_assignment(compiler *cs, operand *out);
 /* Converts a value to a bool condition register (errors unless it is a bool scalar). */
 int parse_condition(compiler *cs, int *reg);

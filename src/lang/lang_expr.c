@@ -115,12 +115,12 @@ void patch_chain(compiler *cs, int chain, int target)
     }
 }
 
-static int const_reg(compiler *cs, sc_kind kind, double value)
+int const_reg(compiler *cs, sc_kind kind, double value)
 {
     sc_program *pr = cs->prog;
     int reg = alloc_regs(cs, 1);
-    if (reg < 0 || grow((void **)&pr->consts, &pr->cap_consts, pr->n_consts + 1,
-                        sizeof *pr->consts) < 0)
+    if (reg < 0 ||
+        grow((void **)&pr->consts, &pr->cap_consts, pr->n_consts + 1, sizeof *pr->consts) < 0)
         return reg < 0 ? -1 : fail_at(cs, NULL, "out of memory");
     pr->consts[pr->n_consts++] = (constant){reg, kind, value};
     return reg;
@@ -149,16 +149,15 @@ static int copy_of(compiler *cs, const operand *o, const ltoken *at)
 /* ---- names ---- */
 
 static const char *const keywords[] = {
-    "const", "in", "out", "inout", "uniform", "attribute", "varying", "layout", "centroid",
-    "flat", "smooth", "invariant", "highp", "mediump", "lowp", "precision", "if", "else",
-    "for", "while", "do", "break", "continue", "return", "discard", "switch", "case",
-    "default", "struct", "true", "false", NULL};
+    "const",    "in",     "out",    "inout",     "uniform", "attribute", "varying",  "layout",
+    "centroid", "flat",   "smooth", "invariant", "highp",   "mediump",   "lowp",     "precision",
+    "if",       "else",   "for",    "while",     "do",      "break",     "continue", "return",
+    "discard",  "switch", "case",   "default",   "struct",  "true",      "false",    NULL};
 
 int is_reserved(const char *s, int len)
 {
     sc_ltype t;
-    if (sc_lt_parse(s, len, &t) == 0 || sc_builtin_exists(s, len) ||
-        sc_lang_builtin_exists(s, len))
+    if (sc_lt_parse(s, len, &t) == 0 || sc_builtin_exists(s, len) || sc_lang_builtin_exists(s, len))
         return 1;
     for (int i = 0; keywords[i]; i++)
         if ((int)strlen(keywords[i]) == len && strncmp(keywords[i], s, (size_t)len) == 0)
@@ -189,8 +188,7 @@ static int move_components(compiler *cs, const ltoken *at, sc_kind to, sc_kind f
 }
 
 /* matCxR(matrix): the overlap copied, the rest from the identity. */
-static int matrix_from_matrix(compiler *cs, const ltoken *at, sc_ltype t, const operand *m,
-                              int dst)
+static int matrix_from_matrix(compiler *cs, const ltoken *at, sc_ltype t, const operand *m, int dst)
 {
     int zero = const_reg(cs, SC_KIND_FLOAT, 0.0), one = const_reg(cs, SC_KIND_FLOAT, 1.0);
     if (zero < 0 || one < 0)
@@ -242,8 +240,8 @@ static int check_construct(compiler *cs, const ltoken *at, sc_ltype t, const ope
         have += sc_ltype_size(args[i].type);
     }
     if (have < need)
-        return fail_at(cs, at, "%s: not enough components (%d given, %d needed)",
-                       type_str(t, tb), have, need);
+        return fail_at(cs, at, "%s: not enough components (%d given, %d needed)", type_str(t, tb),
+                       have, need);
     return 0;
 }
 
@@ -295,8 +293,7 @@ static int resolve_float_builtin(const ltoken *name, const operand *args, int n_
                      name->len, name->start, i + 1, type_str(args[i].type, tb));
             return -1;
         }
-    call->index = sc_builtin_resolve(name->start, name->len, types, n_args, &result, msg,
-                                     msg_size);
+    call->index = sc_builtin_resolve(name->start, name->len, types, n_args, &result, msg, msg_size);
     call->result = sc_lt_from_expr(result);
     return call->index;
 }
@@ -348,8 +345,8 @@ static int call_builtin(compiler *cs, const ltoken *name, const operand *args, i
         found = resolve_float_builtin(name, args, n_args, &call, msg, (int)sizeof msg);
     if (found < 0 && sc_lang_builtin_exists(name->start, name->len)) {
         char lmsg[160];
-        found = sc_lang_builtin_resolve(name->start, name->len, types, n_args, &call.result,
-                                        lmsg, (int)sizeof lmsg);
+        found = sc_lang_builtin_resolve(name->start, name->len, types, n_args, &call.result, lmsg,
+                                        (int)sizeof lmsg);
         call.index = found;
         call.is_lang = 1;
         if (!msg[0])
@@ -372,8 +369,6 @@ static int parse_args(compiler *cs, operand *args, int *n_args)
 {
     *n_args = 0;
     next(cs); /* '(' */
-    if (is_word(cs, "void") && peek(cs).kind == T_PUNCT && peek(cs).punct == ')')
-        next(cs);
     if (is_punct(cs, ')')) {
         next(cs);
         return 0;
@@ -409,8 +404,7 @@ static int parse_call(compiler *cs, const ltoken *name, operand *out)
     }
     if (find_function(cs, name->start, name->len))
         return call_function(cs, name, args, n_args, out);
-    if (sc_builtin_exists(name->start, name->len) ||
-        sc_lang_builtin_exists(name->start, name->len))
+    if (sc_builtin_exists(name->start, name->len) || sc_lang_builtin_exists(name->start, name->len))
         return call_builtin(cs, name, args, n_args, out);
     return unknown_function(cs, name);
 }
@@ -443,8 +437,8 @@ static int parse_identifier(compiler *cs, operand *out)
 
 static int parse_literal(compiler *cs, operand *out)
 {
-    static const sc_kind kinds[] = {[T_INT] = SC_KIND_INT, [T_UINT] = SC_KIND_UINT,
-                                    [T_FLOAT] = SC_KIND_FLOAT};
+    static const sc_kind kinds[] = {
+        [T_INT] = SC_KIND_INT, [T_UINT] = SC_KIND_UINT, [T_FLOAT] = SC_KIND_FLOAT};
     sc_kind kind = kinds[cs->tok.kind];
     int reg = const_reg(cs, kind, cs->tok.num);
     *out = value_at(sc_lt(kind, 1, 1), reg);
@@ -503,8 +497,8 @@ static int read_swizzle(compiler *cs, const ltoken *t, sc_ltype bt, unsigned cha
             return fail_at(cs, t, "swizzle '%.*s' names a component a %s does not have", t->len,
                            t->start, type_str(bt, tb));
         if (first_set >= 0 && set != first_set)
-            return fail_at(cs, t, "swizzle '%.*s' mixes component sets (xyzw, rgba, stpq)",
-                           t->len, t->start);
+            return fail_at(cs, t, "swizzle '%.*s' mixes component sets (xyzw, rgba, stpq)", t->len,
+                           t->start);
         first_set = set;
         for (int j = 0; j < i; j++)
             *repeats |= comp[j] == k;
@@ -622,8 +616,8 @@ int store(compiler *cs, const operand *lv, int src, const ltoken *at)
     for (int k = 0; k < sc_ltype_size(lv->type); k++) {
         int i = lv->lv_index < 0
                     ? emit_at(cs, at, OP_MOV, lv->lv_reg + lv->lv_comp[k], src + k, 0, 0, 1)
-                    : emit_at(cs, at, OP_STORE, lv->lv_reg + lv->lv_comp[k], src + k,
-                              lv->lv_index, lv->lv_count, 1);
+                    : emit_at(cs, at, OP_STORE, lv->lv_reg + lv->lv_comp[k], src + k, lv->lv_index,
+                              lv->lv_count, 1);
         if (i < 0)
             return -1;
         cs->prog->code[i].kind = (unsigned char)lv->lv_stride;
@@ -631,8 +625,8 @@ int store(compiler *cs, const operand *lv, int src, const ltoken *at)
     return 0;
 }
 
-static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a,
-                      const operand *b, operand *out);
+static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a, const operand *b,
+                      operand *out);
 
 /* ++x, --x, x++, x--: the new value (prefix) or a copy of the old one (postfix). */
 static int increment(compiler *cs, const ltoken *op, operand *o, int prefix)
@@ -715,8 +709,9 @@ static const char *op_text(const ltoken *op, char *buf)
 static int mismatch(compiler *cs, const ltoken *op, sc_ltype a, sc_ltype b)
 {
     char ob[4], ab[16], bb[16];
-    return fail_at(cs, op, "operator '%s': operands %s and %s do not match (GLSL ES converts "
-                           "nothing implicitly)",
+    return fail_at(cs, op,
+                   "operator '%s': operands %s and %s do not match (GLSL ES converts "
+                   "nothing implicitly)",
                    op_text(op, ob), type_str(a, ab), type_str(b, bb));
 }
 
@@ -738,8 +733,8 @@ static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const o
 }
 
 /* a op b for + - * / % & | ^ (component-wise, a scalar broadcast) and the matrix products. */
-static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a,
-                      const operand *b, operand *out)
+static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a, const operand *b,
+                      operand *out)
 {
     sc_ltype t;
     int matmul;
@@ -769,10 +764,10 @@ static int shift(compiler *cs, const ltoken *op, const operand *a, const operand
         !(sc_lt_is_scalar(tb) || (sc_lt_is_vector(ta) && tb.rows == ta.rows && tb.cols == 1)))
         return mismatch(cs, op, ta, tb);
     int dst = alloc_regs(cs, sc_ltype_size(ta));
-    int i = dst < 0 ? -1
-                    : emit_at(cs, op, op->punct == P_SHL || op->punct == P_SHL_ASSIGN ? OP_SHL
-                                                                                      : OP_SHR,
-                              dst, a->reg, b->reg, 0, sc_ltype_size(ta));
+    int i = dst < 0
+                ? -1
+                : emit_at(cs, op, op->punct == P_SHL || op->punct == P_SHL_ASSIGN ? OP_SHL : OP_SHR,
+                          dst, a->reg, b->reg, 0, sc_ltype_size(ta));
     if (i < 0)
         return -1;
     cs->prog->code[i].kind = ta.kind;
@@ -804,8 +799,9 @@ static int comparison(compiler *cs, const ltoken *op, const operand *a, const op
                            sc_ltype_size(a->type), a->type.kind, out);
     if (!sc_lt_is_scalar(a->type) || a->type.kind == SC_KIND_BOOL) {
         char ob[4], tb[16];
-        return fail_at(cs, op, "operator '%s' compares scalar numbers, not %s (for vectors: "
-                               "lessThan, greaterThan ...)",
+        return fail_at(cs, op,
+                       "operator '%s' compares scalar numbers, not %s (for vectors: "
+                       "lessThan, greaterThan ...)",
                        op_text(op, ob), type_str(a->type, tb));
     }
     int swap = p == '>' || p == P_GE; /* a > b is b < a */
@@ -830,11 +826,11 @@ typedef struct {
 } binop;
 
 static const binop binops[] = {
-    {P_OR, 1, 0},      {P_XOR, 2, OP_NE},   {P_AND, 3, 0},  {'|', 4, OP_BITOR},
-    {'^', 5, OP_BITXOR}, {'&', 6, OP_BITAND}, {P_EQ, 7, 0},  {P_NE, 7, 0},
-    {'<', 8, 0},       {'>', 8, 0},         {P_LE, 8, 0},   {P_GE, 8, 0},
-    {P_SHL, 9, 0},     {P_SHR, 9, 0},       {'+', 10, OP_ADD}, {'-', 10, OP_SUB},
-    {'*', 11, OP_MUL}, {'/', 11, OP_DIV},   {'%', 11, OP_MOD},
+    {P_OR, 1, 0},        {P_XOR, 2, OP_NE},   {P_AND, 3, 0},     {'|', 4, OP_BITOR},
+    {'^', 5, OP_BITXOR}, {'&', 6, OP_BITAND}, {P_EQ, 7, 0},      {P_NE, 7, 0},
+    {'<', 8, 0},         {'>', 8, 0},         {P_LE, 8, 0},      {P_GE, 8, 0},
+    {P_SHL, 9, 0},       {P_SHR, 9, 0},       {'+', 10, OP_ADD}, {'-', 10, OP_SUB},
+    {'*', 11, OP_MUL},   {'/', 11, OP_DIV},   {'%', 11, OP_MOD},
 };
 
 static const binop *current_binop(const compiler *cs)
@@ -903,7 +899,8 @@ static int parse_binary(compiler *cs, int min_prec, operand *out)
             continue;
         }
         operand lhs = *out, rhs;
-        if (parse_binary(cs, b->prec + 1, &rhs) < 0 || apply_binary(cs, &op, b, &lhs, &rhs, out) < 0)
+        if (parse_binary(cs, b->prec + 1, &rhs) < 0 ||
+            apply_binary(cs, &op, b, &lhs, &rhs, out) < 0)
             return -1;
     }
     return 0;
@@ -913,7 +910,7 @@ static int unary_operator(compiler *cs, const ltoken *op, operand *o)
 {
     char tb[16];
     int p = op->punct, code = p == '-' ? OP_NEG : p == '~' ? OP_BITNOT : OP_NOT;
-    int ok = p == '-' ? o->type.kind != SC_KIND_BOOL
+    int ok = p == '-'   ? o->type.kind != SC_KIND_BOOL
              : p == '~' ? sc_lt_is_integer(o->type) && !sc_lt_is_matrix(o->type)
                         : is_bool_scalar(o->type);
     if (!ok || o->type.kind > SC_KIND_BOOL)
@@ -1008,11 +1005,17 @@ static int parse_conditional(compiler *cs, operand *out)
 
 static int assign_code(int punct)
 {
-    static const int codes[][2] = {
-        {P_ADD_ASSIGN, OP_ADD}, {P_SUB_ASSIGN, OP_SUB},    {P_MUL_ASSIGN, OP_MUL},
-        {P_DIV_ASSIGN, OP_DIV}, {P_MOD_ASSIGN, OP_MOD},    {P_AND_ASSIGN, OP_BITAND},
-        {P_OR_ASSIGN, OP_BITOR}, {P_XOR_ASSIGN, OP_BITXOR}, {P_SHL_ASSIGN, OP_SHL},
-        {P_SHR_ASSIGN, OP_SHR}, {'=', OP_MOV}};
+    static const int codes[][2] = {{P_ADD_ASSIGN, OP_ADD},
+                                   {P_SUB_ASSIGN, OP_SUB},
+                                   {P_MUL_ASSIGN, OP_MUL},
+                                   {P_DIV_ASSIGN, OP_DIV},
+                                   {P_MOD_ASSIGN, OP_MOD},
+                                   {P_AND_ASSIGN, OP_BITAND},
+                                   {P_OR_ASSIGN, OP_BITOR},
+                                   {P_XOR_ASSIGN, OP_BITXOR},
+                                   {P_SHL_ASSIGN, OP_SHL},
+                                   {P_SHR_ASSIGN, OP_SHR},
+                                   {'=', OP_MOV}};
     for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++)
         if (codes[i][0] == punct)
             return codes[i][1];

@@ -14,9 +14,9 @@
 #include "shadecalc/lang.h"
 
 typedef enum {
-    OP_MOV,     /* dst[0..n) = a[0..n) */
-    OP_CVT,     /* dst[0..n) = a[0..n) converted from kind2 to kind */
-    OP_ADD,     /* component-wise dst = a op b in kind; flags: BCAST_A, BCAST_B */
+    OP_MOV, /* dst[0..n) = a[0..n) */
+    OP_CVT, /* dst[0..n) = a[0..n) converted from kind2 to kind */
+    OP_ADD, /* component-wise dst = a op b in kind; flags: BCAST_A, BCAST_B */
     OP_SUB,
     OP_MUL,
     OP_DIV,
@@ -31,14 +31,14 @@ typedef enum {
     OP_NOT,    /* dst = !a (bool) */
     OP_LT,     /* scalar comparisons in kind: dst = a op b (bool) */
     OP_LE,
-    OP_EQ,     /* dst = (a[0..n) == b[0..n)) one bool */
+    OP_EQ, /* dst = (a[0..n) == b[0..n)) one bool */
     OP_NE,
     OP_MATMUL, /* dst = a (rows x inner) * b (inner x cols): rows, inner, cols in aux[c..c+3) */
     OP_JMP,    /* pc = c */
     OP_JZ,     /* if a[0] == 0: pc = c */
     OP_JNZ,
-    OP_LOOP,   /* counts an iteration: error past the bound */
-    OP_CALL,   /* push pc, pc = c */
+    OP_LOOP, /* counts an iteration: error past the bound */
+    OP_CALL, /* push pc, pc = c */
     OP_RET,
     OP_NORETURN, /* a value-returning function ended without `return`: error */
     OP_BUILTIN,  /* calls[c]: a built-in's result to dst */
@@ -59,10 +59,10 @@ typedef struct {
 
 /* A built-in call: evaluated through expr/builtins.c (float built-ins) or lang_builtins.c. */
 typedef struct {
-    int index;      /* in expr/builtins.c (float) or lang_builtins.c (is_lang) */
+    int index; /* in expr/builtins.c (float) or lang_builtins.c (is_lang) */
     int is_lang;
     int n_args;
-    int args[4];    /* argument registers */
+    int args[4]; /* argument registers */
     sc_ltype types[4];
     sc_ltype result;
 } builtin_call;

@@ -2,8 +2,6 @@
  * hexadecimal, `u` suffix), float literals (`f` suffix), identifiers, operators; `#version`
  * and `#extension` lines are skipped, other preprocessor directives are an error. */
 #include <ctype.h>
-#include <errno.h>
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -86,7 +84,7 @@ static void scan_integer(const char *s, ltoken *t)
     const char *digits = p;
     double value = 0.0;
     for (;; p++) {
-        int d = isdigit((unsigned char)*p) ? *p - '0'
+        int d = isdigit((unsigned char)*p)    ? *p - '0'
                 : isxdigit((unsigned char)*p) ? tolower((unsigned char)*p) - 'a' + 10
                                               : -1;
         if (d < 0 || d >= base)
@@ -156,12 +154,12 @@ static const struct {
     const char *text;
     int code;
 } multi[] = {
-    {"<<=", P_SHL_ASSIGN}, {">>=", P_SHR_ASSIGN}, {"<<", P_SHL}, {">>", P_SHR},
-    {"<=", P_LE},          {">=", P_GE},          {"==", P_EQ},  {"!=", P_NE},
-    {"&&", P_AND},         {"||", P_OR},          {"^^", P_XOR}, {"++", P_INC},
-    {"--", P_DEC},         {"+=", P_ADD_ASSIGN},  {"-=", P_SUB_ASSIGN},
-    {"*=", P_MUL_ASSIGN},  {"/=", P_DIV_ASSIGN},  {"%=", P_MOD_ASSIGN},
-    {"&=", P_AND_ASSIGN},  {"|=", P_OR_ASSIGN},   {"^=", P_XOR_ASSIGN},
+    {"<<=", P_SHL_ASSIGN}, {">>=", P_SHR_ASSIGN}, {"<<", P_SHL},        {">>", P_SHR},
+    {"<=", P_LE},          {">=", P_GE},          {"==", P_EQ},         {"!=", P_NE},
+    {"&&", P_AND},         {"||", P_OR},          {"^^", P_XOR},        {"++", P_INC},
+    {"--", P_DEC},         {"+=", P_ADD_ASSIGN},  {"-=", P_SUB_ASSIGN}, {"*=", P_MUL_ASSIGN},
+    {"/=", P_DIV_ASSIGN},  {"%=", P_MOD_ASSIGN},  {"&=", P_AND_ASSIGN}, {"|=", P_OR_ASSIGN},
+    {"^=", P_XOR_ASSIGN},
 };
 
 static void scan_punct(const char *s, ltoken *t)

@@ -24,7 +24,8 @@ typedef struct {
 #if defined(__GNUC__)
 __attribute__((format(printf, 3, 4)))
 #endif
-static int runtime_error(machine *m, const insn *in, const char *fmt, ...)
+static int
+runtime_error(machine *m, const insn *in, const char *fmt, ...)
 {
     va_list ap;
     m->err->line = in->line;
@@ -161,7 +162,8 @@ static void matmul(const machine *m, const insn *in)
 static void convert(const machine *m, const insn *in)
 {
     for (int k = 0; k < in->n; k++)
-        m->r[in->dst + k] = sc_convert((sc_kind)in->kind, (sc_kind)in->kind2, m->r[in->a + k], m->p);
+        m->r[in->dst + k] = sc_convert((sc_kind)in->kind, (sc_kind)in->kind2, m->r[in->a + k],
+                                       m->p);
 }
 
 /* ---- built-ins ---- */
@@ -186,8 +188,7 @@ static void call_builtin(const machine *m, const insn *in)
         const double *args[4];
         for (int i = 0; i < call->n_args; i++)
             args[i] = m->r + call->args[i];
-        sc_lang_builtin_eval(call->index, m->p, args, call->types, call->n_args, call->result,
-                             dst);
+        sc_lang_builtin_eval(call->index, m->p, args, call->types, call->n_args, call->result, dst);
         return;
     }
     sc_value args[4];
@@ -237,18 +238,32 @@ static int execute(machine *m, int *stack, sc_lang_emit_fn emit, void *user)
         switch ((opcode)in->op) {
         case OP_MOV: memmove(r + in->dst, r + in->a, (size_t)in->n * sizeof *r); break;
         case OP_CVT: convert(m, in); break;
-        case OP_ADD: case OP_SUB: case OP_MUL: case OP_DIV: case OP_MOD: case OP_BITAND:
-        case OP_BITOR: case OP_BITXOR: case OP_SHL: case OP_SHR: binary(m, in); break;
-        case OP_NEG: case OP_BITNOT: case OP_NOT: unary(m, in); break;
-        case OP_LT: case OP_LE: case OP_EQ: case OP_NE: compare(m, in); break;
+        case OP_ADD:
+        case OP_SUB:
+        case OP_MUL:
+        case OP_DIV:
+        case OP_MOD:
+        case OP_BITAND:
+        case OP_BITOR:
+        case OP_BITXOR:
+        case OP_SHL:
+        case OP_SHR: binary(m, in); break;
+        case OP_NEG:
+        case OP_BITNOT:
+        case OP_NOT: unary(m, in); break;
+        case OP_LT:
+        case OP_LE:
+        case OP_EQ:
+        case OP_NE: compare(m, in); break;
         case OP_MATMUL: matmul(m, in); break;
         case OP_JMP: pc = in->c; break;
         case OP_JZ: pc = r[in->a] == 0.0 ? in->c : pc; break;
         case OP_JNZ: pc = r[in->a] != 0.0 ? in->c : pc; break;
         case OP_LOOP:
             if (++m->iterations > m->prog->max_iterations)
-                return runtime_error(m, in, "more than %ld loop iterations (the bound: "
-                                            "--max-iterations)",
+                return runtime_error(m, in,
+                                     "more than %ld loop iterations (the bound: "
+                                     "--max-iterations)",
                                      m->prog->max_iterations);
             break;
         case OP_CALL:
@@ -258,8 +273,7 @@ static int execute(machine *m, int *stack, sc_lang_emit_fn emit, void *user)
             pc = in->c;
             break;
         case OP_RET: pc = stack[--sp]; break;
-        case OP_NORETURN:
-            return runtime_error(m, in, "the function ended without 'return'");
+        case OP_NORETURN: return runtime_error(m, in, "the function ended without 'return'");
         case OP_BUILTIN: call_builtin(m, in); break;
         case OP_LOAD:
             if (indexed(m, in, &offset) < 0)
@@ -297,13 +311,12 @@ static void load_inputs(machine *m, const sc_lvalue *inputs)
         m->r[pr->consts[i].reg] = in_precision(m, pr->consts[i].kind, pr->consts[i].value);
     for (int i = 0; i < pr->n_inputs; i++)
         for (int k = 0; k < sc_ltype_size(pr->input_types[i]); k++)
-            m->r[pr->input_regs[i] + k] =
-                in_precision(m, (sc_kind)pr->input_types[i].kind, inputs[i].v[k]);
+            m->r[pr->input_regs[i] + k] = in_precision(m, (sc_kind)pr->input_types[i].kind,
+                                                       inputs[i].v[k]);
 }
 
-int sc_program_run(const sc_program *prog, sc_prec p, const sc_lvalue *inputs,
-                   sc_lang_emit_fn emit, sc_lang_domain_fn on_domain, void *user,
-                   sc_lang_error *err)
+int sc_program_run(const sc_program *prog, sc_prec p, const sc_lvalue *inputs, sc_lang_emit_fn emit,
+                   sc_lang_domain_fn on_domain, void *user, sc_lang_error *err)
 {
     machine m = {prog, p, sc_int_bits(p), NULL, on_domain, user, err, 0};
     memset(err, 0, sizeof *err);

@@ -122,7 +122,14 @@ static int parse_declarator(compiler *cs, sc_ltype t, int is_const)
     int reg;
     if (declare_variable(cs, &name, t, is_const, &reg) < 0)
         return -1;
-    return has_init ? emit_at(cs, &eq, OP_MOV, reg, init.reg, 0, 0, sc_ltype_size(t)) : 0;
+    if (has_init)
+        return emit_at(cs, &eq, OP_MOV, reg, init.reg, 0, 0, sc_ltype_size(t)) < 0 ? -1 : 0;
+    /* zero, also when a function's declaration runs again (its registers are static) */
+    int zero = const_reg(cs, (sc_kind)t.kind, 0.0);
+    for (int k = 0; k < sc_ltype_size(t) && zero >= 0; k++)
+        if (emit_at(cs, &name, OP_MOV, reg + k, zero, 0, 0, 1) < 0)
+            return -1;
+    return zero < 0 ? -1 : 0;
 }
 
 static int parse_declaration_rest(compiler *cs, sc_ltype t, int is_const)
@@ -141,7 +148,8 @@ static int parse_declaration_rest(compiler *cs, sc_ltype t, int is_const)
 const function *find_function(const compiler *cs, const char *s, int len)
 {
     for (int i = 0; i < cs->n_funcs; i++)
-        if ((int)strlen(cs->funcs[i].name) == len && strncmp(cs->funcs[i].name, s, (size_t)len) == 0)
+        if ((int)strlen(cs->funcs[i].name) == len &&
+            strncmp(cs->funcs[i].name, s, (size_t)len) == 0)
             return &cs->funcs[i];
     return NULL;
 }
@@ -156,8 +164,8 @@ static int same_params(const function *f, const sc_ltype *types, int n)
     return 1;
 }
 
-static const function *find_overload(const compiler *cs, const ltoken *name,
-                                     const sc_ltype *types, int n)
+static const function *find_overload(const compiler *cs, const ltoken *name, const sc_ltype *types,
+                                     int n)
 {
     for (int i = 0; i < cs->n_funcs; i++) {
         const function *f = &cs->funcs[i];
@@ -192,8 +200,9 @@ int call_function(compiler *cs, const ltoken *name, operand *args, int n_args, o
         return fail_at(cs, name, "'%s' calls itself: GLSL ES forbids recursion", f->name);
     for (int i = 0; i < n_args; i++) {
         if ((f->qual[i] & Q_OUT) && !args[i].lv)
-            return fail_at(cs, name, "argument %d of '%s' is an out parameter: it must be a "
-                                     "variable, not %s",
+            return fail_at(cs, name,
+                           "argument %d of '%s' is an out parameter: it must be a "
+                           "variable, not %s",
                            i + 1, f->name, args[i].why);
         if ((f->qual[i] & Q_IN) && emit_at(cs, name, OP_MOV, f->param_regs[i], args[i].reg, 0, 0,
                                            sc_ltype_size(args[i].type)) < 0)
@@ -270,16 +279,17 @@ static int parse_params(compiler *cs, function *f, ltoken *names)
 static int check_new_function(compiler *cs, const ltoken *name, const function *f)
 {
     if (is_reserved(name->start, name->len))
-        return fail_at(cs, name, "'%.*s' is a built-in or reserved name (GLSL ES does not let a "
-                                 "program redefine or overload built-ins)",
+        return fail_at(cs, name,
+                       "'%.*s' is a built-in or reserved name (GLSL ES does not let a "
+                       "program redefine or overload built-ins)",
                        name->len, name->start);
     if (name->len >= MAX_NAME)
         return fail_at(cs, name, "name '%.20s...' is too long", name->start);
     if (find_variable(cs, name->start, name->len))
         return fail_at(cs, name, "'%.*s' is already a variable", name->len, name->start);
     if (find_overload(cs, name, f->params, f->n_params))
-        return fail_at(cs, name, "'%.*s' is already defined with these parameter types",
-                       name->len, name->start);
+        return fail_at(cs, name, "'%.*s' is already defined with these parameter types", name->len,
+                       name->start);
     return 0;
 }
 
@@ -324,8 +334,9 @@ static int parse_function(compiler *cs, sc_ltype ret, const ltoken *name)
     if (parse_params(cs, &f, names) < 0 || check_new_function(cs, name, &f) < 0)
         return -1;
     if (is_punct(cs, ';'))
-        return fail_at(cs, name, "function prototypes are not supported: define '%.*s' before "
-                                 "its first call",
+        return fail_at(cs, name,
+                       "function prototypes are not supported: define '%.*s' before "
+                       "its first call",
                        name->len, name->start);
     memcpy(f.name, name->start, (size_t)name->len);
     f.ret = ret;
@@ -635,11 +646,10 @@ static int parse_keyword_statement(compiler *cs)
 
 static int is_statement_keyword(const compiler *cs)
 {
-    static const char *const words[] = {"if",     "for",    "while",   "do",
-                                        "break",  "continue", "return", "precision",
-                                        "discard", "switch", "struct",  "uniform",
-                                        "in",     "out",    "inout",   "attribute",
-                                        "varying", "layout", "invariant", NULL};
+    static const char *const words[] = {"if",        "for",     "while",     "do",        "break",
+                                        "continue",  "return",  "precision", "discard",   "switch",
+                                        "struct",    "uniform", "in",        "out",       "inout",
+                                        "attribute", "varying", "layout",    "invariant", NULL};
     for (int i = 0; words[i]; i++)
         if (is_word(cs, words[i]))
             return 1;
@@ -672,8 +682,8 @@ static int declare_inputs(compiler *cs, const sc_lang_input *inputs, int n_input
     if (n_inputs > (int)(sizeof cs->prog->input_regs / sizeof cs->prog->input_regs[0]))
         return fail_at(cs, NULL, "too many inputs");
     for (int i = 0; i < n_inputs; i++) {
-        ltoken name = {.kind = T_IDENT, .start = inputs[i].name,
-                       .len = (int)strlen(inputs[i].name)};
+        ltoken name = {
+            .kind = T_IDENT, .start = inputs[i].name, .len = (int)strlen(inputs[i].name)};
         if (declare_variable(cs, &name, inputs[i].type, 1, &cs->prog->input_regs[i]) < 0)
             return -1;
         cs->prog->input_types[i] = inputs[i].type;

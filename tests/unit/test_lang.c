@@ -267,6 +267,10 @@ static void scopes_shadow_and_end(void **state)
     assert_true(scalar("int x = 1; { int x = 2; x += 5; } x;") == 1.0);
     assert_true(scalar("int x = 1; for (int x = 0; x < 3; x++) {} x;") == 1.0);
     assert_compile_error("{ int y = 1; } y;", 1, 16, "unknown variable 'y'");
+    /* a declaration without initializer is zero each time it runs */
+    results r = run("float f() { float a; a += 1.0; return a; } f(); f(); ivec3 z; z;");
+    assert_true(r.v[0].v[0] == 1.0 && r.v[1].v[0] == 1.0);
+    assert_true(r.v[2].v[0] == 0.0 && r.v[2].v[2] == 0.0);
 }
 
 /* ---- functions ---- */
