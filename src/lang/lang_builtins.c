@@ -2,7 +2,7 @@
  * clamp, §8.3 isnan isinf and the bit casts, §8.4 packing, §8.7 vector relational functions).
  * The float built-ins are expr/builtins.c's. Bit casts and packing are highp (binary32 and
  * 32-bit integers) whatever the precision, as GLSL ES declares them; packing computes
- * round(clamp(c, ...) × scale) exactly, rounding half to even. */
+ * round(clamp(c, ...) × scale) with the product in binary32, rounding half to even. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -198,9 +198,10 @@ static uint32_t pack16(family f, double c)
         return sc_half_from_double(c);
     if (isnan(c))
         return 0;
+    /* the product in binary32 (exact in double, then rounded), then to the nearest integer */
     if (f == F_PACK_SNORM)
-        return (uint32_t)(int32_t)nearbyint(clampd(c, -1.0, 1.0) * 32767.0) & 0xFFFFu;
-    return (uint32_t)nearbyint(clampd(c, 0.0, 1.0) * 65535.0);
+        return (uint32_t)(int32_t)nearbyint((float)(clampd(c, -1.0, 1.0) * 32767.0)) & 0xFFFFu;
+    return (uint32_t)nearbyint((float)(clampd(c, 0.0, 1.0) * 65535.0));
 }
 
 static double unpack16(family f, uint32_t h)
