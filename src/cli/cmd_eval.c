@@ -154,13 +154,7 @@ static int add_define(define_set *d, const char *arg, const eval_options *o)
 
 static void print_number(FILE *out, double x, const eval_options *o, int json)
 {
-    char buf[64];
-    if (o->hex)
-        sc_format_bits(buf, sizeof buf, x, o->prec);
-    else
-        sc_format_shortest(buf, sizeof buf, x, o->prec);
-    int quoted = json && (o->hex || x != x || x - x != 0.0); /* JSON has no NaN or Inf */
-    fprintf(out, quoted ? "\"%s\"" : "%s", buf);
+    sc_print_float(out, x, o->prec, o->hex, json);
 }
 
 static double ulp_of(const eval_options *o, const sc_value *v, const sc_value *ref, int k)

@@ -101,7 +101,6 @@ static int report_domain(file_run *run)
 static void print_component(FILE *out, const file_run *run, sc_kind kind, double x, int json)
 {
     const eval_file_options *o = run->o;
-    char buf[64];
     if (kind == SC_KIND_BOOL) {
         fputs(x != 0.0 ? "true" : "false", out);
         return;
@@ -115,11 +114,17 @@ static void print_component(FILE *out, const file_run *run, sc_kind kind, double
             fprintf(out, "%.0f", x);
         return;
     }
-    if (o->hex)
-        sc_format_bits(buf, sizeof buf, x, o->prec);
+    sc_print_float(out, x, o->prec, o->hex, json);
+}
+
+void sc_print_float(FILE *out, double x, sc_prec p, int hex, int json)
+{
+    char buf[64];
+    if (hex)
+        sc_format_bits(buf, sizeof buf, x, p);
     else
-        sc_format_shortest(buf, sizeof buf, x, o->prec);
-    int quoted = json && (o->hex || x != x || x - x != 0.0); /* JSON has no NaN or Inf */
+        sc_format_shortest(buf, sizeof buf, x, p);
+    int quoted = json && (hex || x != x || x - x != 0.0); /* JSON has no NaN or Inf */
     fprintf(out, quoted ? "\"%s\"" : "%s", buf);
 }
 

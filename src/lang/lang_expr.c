@@ -63,21 +63,6 @@ const char *type_str(sc_ltype t, char *buf) { return sc_ltype_name(t, buf, 16); 
 
 /* ---- emitting ---- */
 
-static int grow(void **buf, int *cap, int need, size_t elem)
-{
-    if (need <= *cap)
-        return 0;
-    int cap2 = *cap ? *cap * 2 : 64;
-    while (cap2 < need)
-        cap2 *= 2;
-    void *p = realloc(*buf, (size_t)cap2 * elem);
-    if (!p)
-        return -1;
-    *buf = p;
-    *cap = cap2;
-    return 0;
-}
-
 int alloc_regs(compiler *cs, int n)
 {
     sc_program *pr = cs->prog;
@@ -90,7 +75,7 @@ int alloc_regs(compiler *cs, int n)
 int emit(compiler *cs, insn in)
 {
     sc_program *pr = cs->prog;
-    if (grow((void **)&pr->code, &pr->cap_code, pr->n_code + 1, sizeof *pr->code) < 0)
+    if (sc_expr_grow((void **)&pr->code, &pr->cap_code, pr->n_code + 1, sizeof *pr->code) < 0)
         return fail_at(cs, NULL, "out of memory");
     pr->code[pr->n_code] = in;
     return pr->n_code++;
@@ -119,8 +104,8 @@ int const_reg(compiler *cs, sc_kind kind, double value)
 {
     sc_program *pr = cs->prog;
     int reg = alloc_regs(cs, 1);
-    if (reg < 0 ||
-        grow((void **)&pr->consts, &pr->cap_consts, pr->n_consts + 1, sizeof *pr->consts) < 0)
+    if (reg < 0 || sc_expr_grow((void **)&pr->consts, &pr->cap_consts, pr->n_consts + 1,
+                                sizeof *pr->consts) < 0)
         return reg < 0 ? -1 : fail_at(cs, NULL, "out of memory");
     pr->consts[pr->n_consts++] = (constant){reg, kind, value};
     return reg;
@@ -273,7 +258,7 @@ static int construct(compiler *cs, const ltoken *at, sc_ltype t, const operand *
 static int add_call(compiler *cs, builtin_call call)
 {
     sc_program *pr = cs->prog;
-    if (grow((void **)&pr->calls, &pr->cap_calls, pr->n_calls + 1, sizeof *pr->calls) < 0)
+    if (sc_expr_grow((void **)&pr->calls, &pr->cap_calls, pr->n_calls + 1, sizeof *pr->calls) < 0)
         return fail_at(cs, NULL, "out of memory");
     pr->calls[pr->n_calls] = call;
     return pr->n_calls++;
@@ -469,19 +454,6 @@ static int parse_primary(compiler *cs, operand *out)
 
 /* ---- postfix: swizzles, indexing, ++ and -- ---- */
 
-static int swizzle_component(char c, int *set)
-{
-    static const char *const sets[] = {"xyzw", "rgba", "stpq"};
-    for (int s = 0; s < 3; s++) {
-        const char *at = strchr(sets[s], c);
-        if (at && c) {
-            *set = s;
-            return (int)(at - sets[s]);
-        }
-    }
-    return -1;
-}
-
 /* The components of a swizzle (into comp) and whether one repeats. */
 static int read_swizzle(compiler *cs, const ltoken *t, sc_ltype bt, unsigned char *comp,
                         int *repeats)
@@ -492,7 +464,7 @@ static int read_swizzle(compiler *cs, const ltoken *t, sc_ltype bt, unsigned cha
     if (t->len > 4)
         return fail_at(cs, t, "swizzle '%.*s' has more than 4 components", t->len, t->start);
     for (int i = 0; i < t->len; i++) {
-        int set, k = swizzle_component(t->start[i], &set);
+        int set, k = sc_swizzle_component(t->start[i], &set);
         if (k < 0 || k >= bt.rows)
             return fail_at(cs, t, "swizzle '%.*s' names a component a %s does not have", t->len,
                            t->start, type_str(bt, tb));
@@ -723,7 +695,7 @@ static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const o
     int inner = sc_lt_is_vector(a->type) ? a->type.rows : a->type.cols;
     int cols = sc_lt_is_vector(b->type) ? 1 : b->type.cols;
     (void)t;
-    if (grow((void **)&pr->aux, &pr->cap_aux, pr->n_aux + 3, sizeof *pr->aux) < 0)
+    if (sc_expr_grow((void **)&pr->aux, &pr->cap_aux, pr->n_aux + 3, sizeof *pr->aux) < 0)
         return fail_at(cs, NULL, "out of memory");
     pr->aux[pr->n_aux] = rows;
     pr->aux[pr->n_aux + 1] = inner;

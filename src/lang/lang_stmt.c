@@ -19,21 +19,6 @@
 
 #include "lang/lang_compiler.h"
 
-static int grow_array(void **buf, int *cap, int need, size_t elem)
-{
-    if (need <= *cap)
-        return 0;
-    int cap2 = *cap ? *cap * 2 : 32;
-    while (cap2 < need)
-        cap2 *= 2;
-    void *p = realloc(*buf, (size_t)cap2 * elem);
-    if (!p)
-        return -1;
-    *buf = p;
-    *cap = cap2;
-    return 0;
-}
-
 static int is_precision_word(const ltoken *t)
 {
     return token_is_word(t, "highp") || token_is_word(t, "mediump") || token_is_word(t, "lowp");
@@ -75,7 +60,7 @@ int declare_variable(compiler *cs, const ltoken *name, sc_ltype t, int is_const,
     *reg = alloc_regs(cs, sc_ltype_size(t));
     if (*reg < 0)
         return -1;
-    if (grow_array((void **)&cs->vars, &cs->cap_vars, cs->n_vars + 1, sizeof *cs->vars) < 0)
+    if (sc_expr_grow((void **)&cs->vars, &cs->cap_vars, cs->n_vars + 1, sizeof *cs->vars) < 0)
         return fail_at(cs, NULL, "out of memory");
     variable *v = &cs->vars[cs->n_vars++];
     memset(v, 0, sizeof *v);
@@ -343,7 +328,7 @@ static int parse_function(compiler *cs, sc_ltype ret, const ltoken *name)
     f.ret_reg = ret.kind > SC_KIND_BOOL ? 0 : alloc_regs(cs, sc_ltype_size(ret));
     int skip = emit_at(cs, name, OP_JMP, 0, 0, 0, -1, 0);
     if (f.ret_reg < 0 || skip < 0 ||
-        grow_array((void **)&cs->funcs, &cs->cap_funcs, cs->n_funcs + 1, sizeof *cs->funcs) < 0)
+        sc_expr_grow((void **)&cs->funcs, &cs->cap_funcs, cs->n_funcs + 1, sizeof *cs->funcs) < 0)
         return f.ret_reg < 0 || skip < 0 ? -1 : fail_at(cs, NULL, "out of memory");
     f.entry = here(cs);
     cs->cur_func = cs->n_funcs;
@@ -559,7 +544,7 @@ static int add_emit(compiler *cs, const char *start, const operand *v)
     const char *end = cs->prev_end;
     while (end > start && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\n'))
         end--;
-    if (grow_array((void **)&pr->emits, &pr->cap_emits, pr->n_emits + 1, sizeof *pr->emits) < 0)
+    if (sc_expr_grow((void **)&pr->emits, &pr->cap_emits, pr->n_emits + 1, sizeof *pr->emits) < 0)
         return fail_at(cs, NULL, "out of memory");
     pr->emits[pr->n_emits] = (emit_site){(int)(start - cs->src), (int)(end - start), v->type};
     return pr->n_emits++;
