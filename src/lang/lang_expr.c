@@ -479,6 +479,20 @@ static int read_swizzle(compiler *cs, const ltoken *t, sc_ltype bt, unsigned cha
     return 0;
 }
 
+/* v.length(), m.length(): the number of components or columns, an int (§5.5). */
+static int parse_length_method(compiler *cs, operand *o)
+{
+    next(cs); /* length */
+    if (expect(cs, '(', "'(' after 'length'") < 0 || expect(cs, ')', "')'") < 0)
+        return -1;
+    int n = sc_lt_is_matrix(o->type) ? o->type.cols : o->type.rows;
+    int reg = const_reg(cs, SC_KIND_INT, n);
+    *o = value_at(sc_lt(SC_KIND_INT, 1, 1), reg);
+    o->is_literal = 1;
+    o->literal = n;
+    return reg < 0 ? -1 : 0;
+}
+
 static int parse_swizzle(compiler *cs, operand *o)
 {
     ltoken dot = cs->tok;
@@ -487,6 +501,8 @@ static int parse_swizzle(compiler *cs, operand *o)
     char tb[16];
     if (t.kind != T_IDENT)
         return fail_expected(cs, "swizzle letters after '.'");
+    if (token_is_word(&t, "length") && (sc_lt_is_vector(o->type) || sc_lt_is_matrix(o->type)))
+        return parse_length_method(cs, o);
     if (!sc_lt_is_vector(o->type))
         return fail_at(cs, &dot, "cannot swizzle a %s (only vectors have components)",
                        type_str(o->type, tb));

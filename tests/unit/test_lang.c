@@ -164,6 +164,14 @@ static void shifts_take_the_count_modulo_32(void **state)
     assert_true(scalar("ivec2(8) >> ivec2(1, 2) == ivec2(4, 2);") == 1.0);
 }
 
+static void length_method_counts_components_and_columns(void **state)
+{
+    (void)state;
+    assert_true(scalar("vec3(1.0).length();") == 3.0);
+    assert_true(scalar("mat4x2(1.0).length();") == 4.0);
+    assert_true(scalar("vec4 v; int s = 0; for (int i = 0; i < v.length(); i++) s++; s;") == 4.0);
+}
+
 static void bitwise_operators(void **state)
 {
     (void)state;
@@ -428,6 +436,7 @@ int main(void)
         cmocka_unit_test(division_by_zero_is_all_ones_and_reported),
         cmocka_unit_test(shifts_take_the_count_modulo_32),
         cmocka_unit_test(bitwise_operators),
+        cmocka_unit_test(length_method_counts_components_and_columns),
         cmocka_unit_test(conversions_follow_glsl),
         cmocka_unit_test(highp_rounds_every_operation_to_binary32),
         cmocka_unit_test(matrices_multiply_as_linear_algebra),
