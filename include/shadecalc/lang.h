@@ -63,6 +63,10 @@ typedef struct {
 
 typedef struct {
     long max_iterations; /* loop iterations executed in one run before the error (<= 0: 10^7) */
+    /* Desktop GLSL's implicit conversion (GLSL 1.30 §4.1.10), for code written for it: an int or
+     * uint scalar or vector where a float one is expected (an operand beside a float, an
+     * initializer, an assigned or returned value, a function argument) converts to float. */
+    int implicit_int_to_float;
 } sc_lang_options;
 
 enum { SC_LANG_DEFAULT_MAX_ITERATIONS = 10000000 };

@@ -110,6 +110,7 @@ typedef struct {
     function *funcs;
     int n_funcs, cap_funcs;
     int cur_func; /* -1 at top level */
+    int implicit; /* sc_lang_options.implicit_int_to_float */
     loop_ctx *loop;
 } compiler;
 
@@ -150,6 +151,11 @@ int parse_condition(compiler *cs, int *reg);
 /* Stores the value in register src into the lvalue. */
 int store(compiler *cs, const operand *lv, int src, const ltoken *at);
 const variable *find_variable(const compiler *cs, const char *s, int len);
+/* With implicit conversions: v converted to `target` if it is the integer form of that float
+ * type (else unchanged). 0, or -1 on error. */
+int widen_to(compiler *cs, const ltoken *at, sc_ltype target, operand *v);
+/* 1 if a value of type `from` may be passed where `to` is expected (equal, or widened). */
+int converts_to(const compiler *cs, sc_ltype from, sc_ltype to);
 int is_reserved(const char *s, int len);
 
 /* ---- statements (lang_stmt.c) ---- */

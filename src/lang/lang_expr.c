@@ -253,6 +253,39 @@ static int construct(compiler *cs, const ltoken *at, sc_ltype t, const operand *
     return status < 0 ? -1 : 0;
 }
 
+/* ---- desktop GLSL's implicit int -> float ---- */
+
+int converts_to(const compiler *cs, sc_ltype from, sc_ltype to)
+{
+    return sc_lt_equal(from, to) ||
+           (cs->implicit && to.kind == SC_KIND_FLOAT && sc_lt_is_integer(from) && from.cols == 1 &&
+            to.cols == 1 && from.rows == to.rows);
+}
+
+int widen_to(compiler *cs, const ltoken *at, sc_ltype target, operand *v)
+{
+    if (sc_lt_equal(v->type, target) || !converts_to(cs, v->type, target))
+        return 0;
+    int n = sc_ltype_size(target), dst = alloc_regs(cs, n);
+    if (dst < 0 || move_components(cs, at, SC_KIND_FLOAT, v->type.kind, dst, v->reg, n) < 0)
+        return -1;
+    *v = value_at(target, dst);
+    return 0;
+}
+
+/* The integer one of a and b widened when the other is a float (same shape or a scalar). */
+static int widen_pair(compiler *cs, const ltoken *at, operand *a, operand *b)
+{
+    sc_ltype ta = a->type, tb = b->type;
+    if (!cs->implicit || ta.kind == tb.kind)
+        return 0;
+    if (ta.kind == SC_KIND_FLOAT)
+        return widen_to(cs, at, sc_lt(SC_KIND_FLOAT, tb.cols, tb.rows), b);
+    if (tb.kind == SC_KIND_FLOAT)
+        return widen_to(cs, at, sc_lt(SC_KIND_FLOAT, ta.cols, ta.rows), a);
+    return 0;
+}
+
 /* ---- built-in calls ---- */
 
 static int add_call(compiler *cs, builtin_call call)
@@ -314,6 +347,25 @@ static int unknown_function(compiler *cs, const ltoken *name)
 }
 
 static int call_builtin(compiler *cs, const ltoken *name, const operand *args, int n_args,
+                        operand *out);
+
+/* A float built-in called with int arguments (desktop GLSL): them widened; else msg. */
+static int call_widened(compiler *cs, const ltoken *name, const operand *args, int n_args,
+                        operand *out, const char *msg)
+{
+    operand wide[4];
+    for (int i = 0; i < n_args; i++) {
+        wide[i] = args[i];
+        sc_ltype t = sc_lt(SC_KIND_FLOAT, args[i].type.cols, args[i].type.rows);
+        if (widen_to(cs, name, t, &wide[i]) < 0)
+            return -1;
+    }
+    if (!all_float_shaped(wide, n_args))
+        return fail_at(cs, name, "%s", msg);
+    return call_builtin(cs, name, wide, n_args, out);
+}
+
+static int call_builtin(compiler *cs, const ltoken *name, const operand *args, int n_args,
                         operand *out)
 {
     builtin_call call = {.n_args = n_args};
@@ -339,6 +391,8 @@ static int call_builtin(compiler *cs, const ltoken *name, const operand *args, i
     } else if (found < 0 && !msg[0]) {
         found = resolve_float_builtin(name, args, n_args, &call, msg, (int)sizeof msg);
     }
+    if (found < 0 && cs->implicit && sc_builtin_exists(name->start, name->len))
+        return call_widened(cs, name, args, n_args, out, msg);
     if (found < 0)
         return fail_at(cs, name, "%s", msg);
     int index = add_call(cs, call), dst = alloc_regs(cs, sc_ltype_size(call.result));
@@ -721,11 +775,14 @@ static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const o
 }
 
 /* a op b for + - * / % & | ^ (component-wise, a scalar broadcast) and the matrix products. */
-static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a, const operand *b,
-                      operand *out)
+static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a0,
+                      const operand *b0, operand *out)
 {
     sc_ltype t;
     int matmul;
+    operand wa = *a0, wb = *b0, *a = &wa, *b = &wb;
+    if (widen_pair(cs, op, a, b) < 0)
+        return -1;
     if (arithmetic_type(a->type, b->type, code, &t, &matmul) < 0)
         return mismatch(cs, op, a->type, b->type);
     int dst = alloc_regs(cs, sc_ltype_size(t));
@@ -776,10 +833,13 @@ static int bool_result(compiler *cs, const ltoken *op, int code, int a, int b, i
     return 0;
 }
 
-static int comparison(compiler *cs, const ltoken *op, const operand *a, const operand *b,
+static int comparison(compiler *cs, const ltoken *op, const operand *a0, const operand *b0,
                       operand *out)
 {
     int p = op->punct;
+    operand wa = *a0, wb = *b0, *a = &wa, *b = &wb;
+    if (widen_pair(cs, op, a, b) < 0)
+        return -1;
     if (!sc_lt_equal(a->type, b->type))
         return mismatch(cs, op, a->type, b->type);
     if (p == P_EQ || p == P_NE)
@@ -1020,6 +1080,8 @@ static int assign(compiler *cs, const ltoken *op, int code, operand *lhs, const 
     } else if (code != OP_MOV && arithmetic(cs, op, code, lhs, rhs, &value) < 0) {
         return -1;
     }
+    if (widen_to(cs, op, lhs->type, &value) < 0)
+        return -1;
     if (!sc_lt_equal(value.type, lhs->type))
         return fail_at(cs, op, "cannot assign %s to %s", type_str(value.type, ab),
                        type_str(lhs->type, bb));

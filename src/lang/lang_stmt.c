@@ -96,7 +96,7 @@ static int parse_declarator(compiler *cs, sc_ltype t, int is_const)
     ltoken eq = cs->tok;
     if (has_init) {
         next(cs);
-        if (parse_assignment(cs, &init) < 0)
+        if (parse_assignment(cs, &init) < 0 || widen_to(cs, &eq, t, &init) < 0)
             return -1;
         if (!sc_lt_equal(init.type, t))
             return fail_at(cs, &eq, "cannot initialize %s '%.*s' with %s", type_str(t, ab),
@@ -161,6 +161,23 @@ static const function *find_overload(const compiler *cs, const ltoken *name, con
     return NULL;
 }
 
+/* With implicit conversions, the first overload the arguments convert to (exact ones first). */
+static const function *find_callee(const compiler *cs, const ltoken *name, const sc_ltype *types,
+                                   int n)
+{
+    const function *exact = find_overload(cs, name, types, n);
+    for (int i = 0; i < cs->n_funcs && !exact && cs->implicit; i++) {
+        const function *f = &cs->funcs[i];
+        int fits = (int)strlen(f->name) == name->len &&
+                   strncmp(f->name, name->start, (size_t)name->len) == 0 && f->n_params == n;
+        for (int k = 0; k < n && fits; k++)
+            fits = converts_to(cs, types[k], f->params[k]) && (f->qual[k] & Q_OUT) == 0;
+        if (fits)
+            return f;
+    }
+    return exact;
+}
+
 static int no_overload(compiler *cs, const ltoken *name, const sc_ltype *types, int n)
 {
     char list[120] = "", tb[16];
@@ -178,7 +195,7 @@ int call_function(compiler *cs, const ltoken *name, operand *args, int n_args, o
     memset(types, 0, sizeof types);
     for (int i = 0; i < n_args; i++)
         types[i] = args[i].type;
-    const function *f = find_overload(cs, name, types, n_args);
+    const function *f = find_callee(cs, name, types, n_args);
     if (!f)
         return no_overload(cs, name, types, n_args);
     if (f - cs->funcs == cs->cur_func)
@@ -189,6 +206,8 @@ int call_function(compiler *cs, const ltoken *name, operand *args, int n_args, o
                            "argument %d of '%s' is an out parameter: it must be a "
                            "variable, not %s",
                            i + 1, f->name, args[i].why);
+        if (widen_to(cs, name, f->params[i], &args[i]) < 0)
+            return -1;
         if ((f->qual[i] & Q_IN) && emit_at(cs, name, OP_MOV, f->param_regs[i], args[i].reg, 0, 0,
                                            sc_ltype_size(args[i].type)) < 0)
             return -1;
@@ -525,7 +544,7 @@ static int parse_return(compiler *cs)
             return fail_at(cs, &at, "'%s' must return a %s", f->name, type_str(f->ret, ab));
     } else {
         operand v;
-        if (parse_expression(cs, &v) < 0)
+        if (parse_expression(cs, &v) < 0 || widen_to(cs, &at, f->ret, &v) < 0)
             return -1;
         if (!sc_lt_equal(v.type, f->ret))
             return fail_at(cs, &at, "'%s' returns %s, not %s", f->name, type_str(f->ret, ab),
@@ -698,6 +717,7 @@ sc_program *sc_program_compile(const char *src, const sc_lang_input *inputs, int
     memset(err, 0, sizeof *err);
     cs.err = err;
     cs.cur_func = -1;
+    cs.implicit = options && options->implicit_int_to_float;
     cs.prog = calloc(1, sizeof *cs.prog);
     size_t len = strlen(src);
     char *copy = cs.prog ? malloc(len + 1) : NULL;

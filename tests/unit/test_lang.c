@@ -82,7 +82,7 @@ static void assert_compile_error(const char *src, int line, int column, const ch
 static void assert_runtime_error(const char *src, long bound, int line, const char *text)
 {
     sc_lang_error err;
-    sc_lang_options options = {bound};
+    sc_lang_options options = {bound, 0};
     sc_program *prog = sc_program_compile(src, NULL, 0, &options, &err);
     if (!prog)
         fail_msg("'%s' did not compile: %s", src, err.message);
@@ -363,6 +363,45 @@ static void float_builtins_keep_working(void **state)
     assert_true(scalar_in(SC_DOUBLE, "min(3.0, 2.0);") == 2.0);
 }
 
+/* ---- desktop GLSL's implicit int -> float ---- */
+
+static results run_desktop(const char *src)
+{
+    results r;
+    memset(&r, 0, sizeof r);
+    sc_lang_error err;
+    sc_lang_options options = {0, 1};
+    sc_program *prog = sc_program_compile(src, NULL, 0, &options, &err);
+    if (!prog)
+        fail_msg("'%s' did not compile: %d:%d: %s", src, err.line, err.column, err.message);
+    if (sc_program_run(prog, SC_DOUBLE, NULL, collect, count_domain, &r, &err) != 0)
+        fail_msg("'%s' failed: %s", src, err.message);
+    sc_program_free(prog);
+    return r;
+}
+
+static void desktop_dialect_converts_ints_to_float(void **state)
+{
+    (void)state;
+    results r = run_desktop("float x = 1; x; 1 - 0.25; clamp(0.5, 0, 1); pow(2.0, 2);"
+                            "float f(float a) { return a * 2; } f(3); x = 2; x < 3;"
+                            "vec3(1.0) * 2; min(7, 3); 1 / 2;");
+    assert_int_equal(r.n, 9);
+    static const double want[] = {1.0, 0.75, 0.5, 4.0, 6.0};
+    for (int i = 0; i < 5; i++)
+        assert_true(r.v[i].type.kind == SC_KIND_FLOAT && r.v[i].v[0] == want[i]);
+    assert_true(r.v[5].type.kind == SC_KIND_BOOL && r.v[5].v[0] == 1.0);
+    assert_true(r.v[6].type.rows == 3 && r.v[6].v[2] == 2.0);
+    /* an int operation stays an int one */
+    assert_true(r.v[7].type.kind == SC_KIND_INT && r.v[7].v[0] == 3.0);
+    assert_true(r.v[8].type.kind == SC_KIND_INT && r.v[8].v[0] == 0.0);
+    /* never float -> int */
+    sc_lang_error err;
+    sc_lang_options options = {0, 1};
+    assert_null(sc_program_compile("int i = 1.5;", NULL, 0, &options, &err));
+    assert_true(strstr(err.message, "cannot initialize int") != NULL);
+}
+
 /* ---- errors ---- */
 
 static void type_errors_name_line_and_column(void **state)
@@ -448,6 +487,7 @@ int main(void)
         cmocka_unit_test(integer_and_bool_builtins),
         cmocka_unit_test(bit_casts_and_packing),
         cmocka_unit_test(float_builtins_keep_working),
+        cmocka_unit_test(desktop_dialect_converts_ints_to_float),
         cmocka_unit_test(type_errors_name_line_and_column),
         cmocka_unit_test(runtime_errors_name_the_line),
         cmocka_unit_test(deep_nesting_is_an_error),
