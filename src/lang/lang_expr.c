@@ -757,14 +757,12 @@ static int mismatch(compiler *cs, const ltoken *op, sc_ltype a, sc_ltype b)
                    op_text(op, ob), type_str(a, ab), type_str(b, bb));
 }
 
-static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const operand *b,
-                       sc_ltype t, int dst)
+static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const operand *b, int dst)
 {
     sc_program *pr = cs->prog;
     int rows = sc_lt_is_vector(a->type) ? 1 : a->type.rows;
     int inner = sc_lt_is_vector(a->type) ? a->type.rows : a->type.cols;
     int cols = sc_lt_is_vector(b->type) ? 1 : b->type.cols;
-    (void)t;
     if (sc_expr_grow((void **)&pr->aux, &pr->cap_aux, pr->n_aux + 3, sizeof *pr->aux) < 0)
         return fail_at(cs, NULL, "out of memory");
     pr->aux[pr->n_aux] = rows;
@@ -790,7 +788,7 @@ static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a
         return -1;
     *out = value_at(t, dst);
     if (matmul)
-        return emit_matmul(cs, op, a, b, t, dst) < 0 ? -1 : 0;
+        return emit_matmul(cs, op, a, b, dst) < 0 ? -1 : 0;
     int i = emit_at(cs, op, code, dst, a->reg, b->reg, 0, sc_ltype_size(t));
     if (i < 0)
         return -1;
