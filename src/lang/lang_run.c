@@ -118,15 +118,15 @@ static void unary(const machine *m, const insn *in)
     double *r = m->r;
     for (int k = 0; k < in->n; k++) {
         double a = r[in->a + k];
-        unsigned long long u = (unsigned long long)(long long)a;
         if (in->op == OP_NOT)
             r[in->dst + k] = a == 0.0;
-        else if (in->op == OP_BITNOT)
-            r[in->dst + k] = sc_int_wrap_bits((sc_kind)in->kind, m->bits, ~u);
         else if (in->kind == SC_KIND_FLOAT)
             r[in->dst + k] = -a;
-        else
-            r[in->dst + k] = sc_int_wrap_bits((sc_kind)in->kind, m->bits, 0 - u);
+        else /* an integer: its bits, complemented or negated, wrapped */
+            r[in->dst + k] = sc_int_wrap_bits((sc_kind)in->kind, m->bits,
+                                              in->op == OP_BITNOT
+                                                  ? ~(unsigned long long)(long long)a
+                                                  : 0 - (unsigned long long)(long long)a);
     }
 }
 

@@ -213,6 +213,9 @@ static void highp_rounds_every_operation_to_binary32(void **state)
     assert_true(scalar("(0.1 + 0.2) * 0.3;") == (double)product);
     assert_true(scalar_in(SC_DOUBLE, "0.1 + 0.2;") == 0.1 + 0.2);
     assert_true(scalar("1.0 / 3.0;") == (double)(1.0f / 3.0f));
+    /* negating a float beyond the integers' range (no integer conversion on the way) */
+    assert_true(scalar_in(SC_DOUBLE, "-1e300;") == -1e300);
+    assert_true(isnan(scalar("-(0.0 / 0.0);")));
 }
 
 static void matrices_multiply_as_linear_algebra(void **state)
