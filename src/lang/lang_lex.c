@@ -209,7 +209,8 @@ void lex_next(lexer *lx, ltoken *t)
 
 void next(compiler *cs)
 {
-    cs->prev_end = cs->tok.start + cs->tok.len;
+    if (cs->tok.start) /* none before the first token */
+        cs->prev_end = cs->tok.start + cs->tok.len;
     lex_next(&cs->lx, &cs->tok);
 }
 

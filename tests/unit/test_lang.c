@@ -95,6 +95,13 @@ static void assert_runtime_error(const char *src, long bound, int line, const ch
                  err.column, err.message, line, text);
 }
 
+static void empty_programs_print_nothing(void **state)
+{
+    (void)state;
+    assert_int_equal(run("").n, 0);
+    assert_int_equal(run("// nothing\n/* at all */ ;").n, 0);
+}
+
 /* ---- integers ---- */
 
 static void int_arithmetic_wraps_like_c_fixed_width_types(void **state)
@@ -473,6 +480,7 @@ static void deep_nesting_is_an_error(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(empty_programs_print_nothing),
         cmocka_unit_test(int_arithmetic_wraps_like_c_fixed_width_types),
         cmocka_unit_test(int_division_truncates_toward_zero),
         cmocka_unit_test(division_by_zero_is_all_ones_and_reported),
