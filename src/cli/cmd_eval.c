@@ -46,6 +46,7 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: shadecalc eval [OPTIONS] EXPR...\n"
+            "       shadecalc eval [OPTIONS] --file F\n"
             "\n"
             "Evaluates GLSL ES expressions (one result line each; with no EXPR, one expression\n"
             "per line of standard input). Statements 'NAME = EXPR;' may precede the expression.\n"
