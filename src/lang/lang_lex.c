@@ -55,11 +55,14 @@ static const char *skip_space(lexer *lx)
             lx->pos += strcspn(lx->pos, "\n");
         } else if (c == '/' && lx->pos[1] == '*') {
             const char *p = lx->pos + 2;
+            lexer start = *lx;
             for (; *p && !(p[0] == '*' && p[1] == '/'); p++)
                 if (*p == '\n')
                     newline(lx, p + 1);
-            if (!*p)
+            if (!*p) { /* reported where it starts */
+                *lx = start;
                 return "unterminated comment";
+            }
             lx->pos = p + 2;
         } else if (c == '#' && at_line_start(lx)) {
             if (skip_directive(lx) < 0)

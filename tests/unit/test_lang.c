@@ -438,6 +438,7 @@ static void type_errors_name_line_and_column(void **state)
     assert_compile_error("int x = 1; int x = 2;", 1, 16, "already declared");
     assert_compile_error("4294967296;", 1, 1, "does not fit in 32 bits");
     assert_compile_error("/* open", 1, 1, "unterminated comment");
+    assert_compile_error("1;\n  /* open\n\n", 2, 3, "unterminated comment");
     assert_compile_error("#define X 1\nX;", 1, 1, "preprocessor");
     assert_compile_error("float a[3];", 1, 8, "arrays are not supported");
     assert_compile_error("void f() {} f() + 1;", 1, 17, "void");
