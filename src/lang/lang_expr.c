@@ -349,7 +349,8 @@ static int unknown_function(compiler *cs, const ltoken *name)
 static int call_builtin(compiler *cs, const ltoken *name, const operand *args, int n_args,
                         operand *out);
 
-/* A float built-in called with int arguments (desktop GLSL): them widened; else msg. */
+/* A float built-in called with int arguments (desktop GLSL): them widened; else msg. Not
+ * called again with float arguments, so this recursion stops at depth one. */
 static int call_widened(compiler *cs, const ltoken *name, const operand *args, int n_args,
                         operand *out, const char *msg)
 {
@@ -391,7 +392,8 @@ static int call_builtin(compiler *cs, const ltoken *name, const operand *args, i
     } else if (found < 0 && !msg[0]) {
         found = resolve_float_builtin(name, args, n_args, &call, msg, (int)sizeof msg);
     }
-    if (found < 0 && cs->implicit && sc_builtin_exists(name->start, name->len))
+    if (found < 0 && cs->implicit && !all_float_shaped(args, n_args) &&
+        sc_builtin_exists(name->start, name->len))
         return call_widened(cs, name, args, n_args, out, msg);
     if (found < 0)
         return fail_at(cs, name, "%s", msg);

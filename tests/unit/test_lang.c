@@ -410,6 +410,10 @@ static void desktop_dialect_converts_ints_to_float(void **state)
     sc_lang_options options = {0, 1};
     assert_null(sc_program_compile("int i = 1.5;", NULL, 0, &options, &err));
     assert_true(strstr(err.message, "cannot initialize int") != NULL);
+    /* wrong calls stay errors (the retry with widened arguments happens once) */
+    assert_null(sc_program_compile("pow(1.0);", NULL, 0, &options, &err));
+    assert_true(strstr(err.message, "pow: expects 2 arguments") != NULL);
+    assert_null(sc_program_compile("clamp(true, 0, 1);", NULL, 0, &options, &err));
 }
 
 /* ---- errors ---- */
