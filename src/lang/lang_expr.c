@@ -484,7 +484,7 @@ static int parse_literal(compiler *cs, operand *out)
     int reg = const_reg(cs, kind, cs->tok.num);
     *out = value_at(sc_lt(kind, 1, 1), reg);
     out->is_literal = kind != SC_KIND_FLOAT;
-    out->literal = sc_int_wrap(kind, 32, cs->tok.num);
+    out->literal = kind == SC_KIND_FLOAT ? 0.0 : sc_int_wrap(kind, 32, cs->tok.num);
     next(cs);
     return reg < 0 ? -1 : 0;
 }

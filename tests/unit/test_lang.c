@@ -223,6 +223,8 @@ static void highp_rounds_every_operation_to_binary32(void **state)
     /* negating a float beyond the integers' range (no integer conversion on the way) */
     assert_true(scalar_in(SC_DOUBLE, "-1e300;") == -1e300);
     assert_true(isnan(scalar("-(0.0 / 0.0);")));
+    /* a float literal beyond the integers' range is no index candidate (no conversion) */
+    assert_true(scalar_in(SC_DOUBLE, "1e19;") == 1e19);
 }
 
 static void matrices_multiply_as_linear_algebra(void **state)
