@@ -88,7 +88,9 @@ typedef int (*sc_lang_emit_fn)(void *user, const char *text, int len, int line,
 typedef void (*sc_lang_domain_fn)(void *user, int line, int column, const char *func,
                                   const char *rule);
 
-/* Runs the program in precision p (inputs rounded to p). Returns 0; -1 on a runtime error (too
+/* Runs the program in precision p (float inputs rounded to p; int and uint inputs truncated
+ * toward zero and wrapped to the precision's width, NaN or beyond 2^63 giving 0; bool inputs
+ * true unless 0). Returns 0; -1 on a runtime error (too
  * many loop iterations, an index out of range, a function ending without `return`, out of
  * memory) with *err filled; 1 if emit asked to stop. */
 int sc_program_run(const sc_program *prog, sc_prec p, const sc_lvalue *inputs, sc_lang_emit_fn emit,

@@ -115,7 +115,8 @@ sc_ltype sc_lt_from_expr(sc_type t);
 int sc_lt_parse(const char *s, int len, sc_ltype *out);
 
 /* The value of an integer of `kind` (int or uint) wrapped to `bits` bits: the int result is
- * in [-2^(bits-1), 2^(bits-1)), the uint in [0, 2^bits). */
+ * in [-2^(bits-1), 2^(bits-1)), the uint in [0, 2^bits). x is truncated toward zero first;
+ * NaN and |x| >= 2^63 give 0. */
 double sc_int_wrap(sc_kind kind, int bits, double x);
 /* The same for the two's complement bits u (modulo 2^64). */
 double sc_int_wrap_bits(sc_kind kind, int bits, unsigned long long u);

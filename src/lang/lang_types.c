@@ -119,9 +119,12 @@ double sc_int_wrap_bits(sc_kind kind, int bits, unsigned long long u)
     return (double)u;
 }
 
-/* x is an integer-valued double of magnitude below 2^63 (every caller's values are). */
+/* x truncated toward zero, then wrapped; NaN and magnitudes from 2^63 on (only a caller's
+ * input can have them) give 0. */
 double sc_int_wrap(sc_kind kind, int bits, double x)
 {
+    if (!(fabs(x) < 9223372036854775808.0))
+        return 0.0;
     return sc_int_wrap_bits(kind, bits, (unsigned long long)(long long)x);
 }
 

@@ -210,6 +210,26 @@ static void conversions_follow_glsl(void **state)
     assert_true(r.v[3].v[3] == 7);
 }
 
+/* int and uint inputs: truncated and wrapped; NaN and magnitudes beyond 2^63 give 0 */
+static void integer_inputs_wrap(void **state)
+{
+    (void)state;
+    sc_lang_input in[2] = {{"i", {SC_KIND_INT, 1, 1}}, {"u", {SC_KIND_UINT, 1, 1}}};
+    sc_lang_error err;
+    sc_program *prog = sc_program_compile("i; u;", in, 2, NULL, &err);
+    assert_non_null(prog);
+    static const double given[][2] = {{-1.0, -1.0}, {2147483648.0, 4294967297.5}, {NAN, 1e30}};
+    static const double want[][2] = {{-1.0, 4294967295.0}, {-2147483648.0, 1.0}, {0.0, 0.0}};
+    for (int k = 0; k < 3; k++) {
+        sc_lvalue values[2] = {{in[0].type, {given[k][0]}}, {in[1].type, {given[k][1]}}};
+        results r;
+        memset(&r, 0, sizeof r);
+        assert_int_equal(sc_program_run(prog, SC_HIGHP, values, collect, NULL, &r, &err), 0);
+        assert_true(r.v[0].v[0] == want[k][0] && r.v[1].v[0] == want[k][1]);
+    }
+    sc_program_free(prog);
+}
+
 /* ---- floats ---- */
 
 static void highp_rounds_every_operation_to_binary32(void **state)
@@ -495,6 +515,7 @@ int main(void)
         cmocka_unit_test(bitwise_operators),
         cmocka_unit_test(length_method_counts_components_and_columns),
         cmocka_unit_test(conversions_follow_glsl),
+        cmocka_unit_test(integer_inputs_wrap),
         cmocka_unit_test(highp_rounds_every_operation_to_binary32),
         cmocka_unit_test(matrices_multiply_as_linear_algebra),
         cmocka_unit_test(loops_match_closed_forms),
