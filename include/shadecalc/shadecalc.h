@@ -15,6 +15,7 @@
 #include "shadecalc/file.h"
 #include "shadecalc/glsl.h"
 #include "shadecalc/image.h"
+#include "shadecalc/lang.h"
 #include "shadecalc/light.h"
 #include "shadecalc/mat.h"
 #include "shadecalc/mesh.h"

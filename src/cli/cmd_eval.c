@@ -6,16 +6,18 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/eval_file.h"
 #include "cli/line_reader.h"
 #include "shadecalc/expr.h"
 
-enum { FMT_GLSL, FMT_CSV, FMT_JSON };
 enum { MAX_DEFINES = 32, MAX_HITS = 8 };
 
 typedef struct {
     sc_prec prec;
     int format;
     int hex, ulp, strict;
+    const char *file;    /* --file, or NULL */
+    long max_iterations; /* --max-iterations */
 } eval_options;
 
 /* -D NAME=EXPR: its value in the chosen precision and in the double reference. */
@@ -44,6 +46,7 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: shadecalc eval [OPTIONS] EXPR...\n"
+            "       shadecalc eval [OPTIONS] --file F\n"
             "\n"
             "Evaluates GLSL ES expressions (one result line each; with no EXPR, one expression\n"
             "per line of standard input). Statements 'NAME = EXPR;' may precede the expression.\n"
@@ -56,6 +59,9 @@ static void usage(FILE *out)
             "      --hex           print bit patterns of the precision instead of decimals\n"
             "      --ulp           also print the error against the double reference, in ULP\n"
             "      --strict        an argument outside a built-in's GLSL ES domain is an error\n"
+            "      --file F        run the GLSL ES program in file F ('-': standard input),\n"
+            "                      printing each top-level expression statement's value\n"
+            "      --max-iterations N  loop iterations a --file run may execute (10000000)\n"
             "  -h, --help          this help\n"
             "\n"
             "example: shadecalc eval 'normalize(vec3(3,0,4))'   ->   vec3(0.6, 0, 0.8)\n");
@@ -149,13 +155,7 @@ static int add_define(define_set *d, const char *arg, const eval_options *o)
 
 static void print_number(FILE *out, double x, const eval_options *o, int json)
 {
-    char buf[64];
-    if (o->hex)
-        sc_format_bits(buf, sizeof buf, x, o->prec);
-    else
-        sc_format_shortest(buf, sizeof buf, x, o->prec);
-    int quoted = json && (o->hex || x != x || x - x != 0.0); /* JSON has no NaN or Inf */
-    fprintf(out, quoted ? "\"%s\"" : "%s", buf);
+    sc_print_float(out, x, o->prec, o->hex, json);
 }
 
 static double ulp_of(const eval_options *o, const sc_value *v, const sc_value *ref, int k)
@@ -187,7 +187,7 @@ static void print_glsl(FILE *out, const sc_value *v, const sc_value *ref, const 
     fputc('\n', out);
 }
 
-static void print_json_string(FILE *out, const char *s)
+void sc_print_json_string(FILE *out, const char *s)
 {
     fputc('"', out);
     for (; *s; s++) {
@@ -209,7 +209,7 @@ static void print_json(FILE *out, const char *src, const sc_value *v, const sc_v
 {
     int n = sc_type_size(v->type);
     fputs("{\"expression\": ", out);
-    print_json_string(out, src);
+    sc_print_json_string(out, src);
     fprintf(out, ", \"precision\": \"%s\", \"type\": \"%s\", \"%s\": ", sc_prec_name(o->prec),
             sc_type_name(v->type), o->hex ? "bits" : "value");
     fputs(n > 1 ? "[" : "", out);
@@ -262,7 +262,7 @@ static void print_csv_header(FILE *out, const sc_type *types, int count, const e
 }
 
 /* A CSV field (RFC 4180): quoted, with quotes doubled, when it has a comma, quote or newline. */
-static void print_csv_field(FILE *out, const char *s)
+void sc_print_csv_field(FILE *out, const char *s)
 {
     if (!s[strcspn(s, ",\"\r\n")]) {
         fputs(s, out);
@@ -281,7 +281,7 @@ static void print_csv(FILE *out, const char *src, const sc_value *v, const sc_va
                       const eval_options *o, int mixed, int width)
 {
     int n = sc_type_size(v->type);
-    print_csv_field(out, src);
+    sc_print_csv_field(out, src);
     if (mixed)
         fprintf(out, ",%s", sc_type_name(v->type));
     for (int k = 0; k < width; k++) {
@@ -338,6 +338,8 @@ static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
                                           {"hex", no_argument, NULL, 'x'},
                                           {"ulp", no_argument, NULL, 'u'},
                                           {"strict", no_argument, NULL, 's'},
+                                          {"file", required_argument, NULL, 'F'},
+                                          {"max-iterations", required_argument, NULL, 'I'},
                                           {"help", no_argument, NULL, 'h'},
                                           {NULL, 0, NULL, 0}};
     const char *defines[MAX_DEFINES + 1];
@@ -362,6 +364,13 @@ static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
         case 'x': o->hex = 1; break;
         case 'u': o->ulp = 1; break;
         case 's': o->strict = 1; break;
+        case 'F': o->file = optarg; break;
+        case 'I':
+            if (sc_parse_long(optarg, &o->max_iterations) < 0 || o->max_iterations < 1) {
+                sc_error("eval: --max-iterations '%s': expected a positive integer", optarg);
+                return SC_EXIT_USAGE;
+            }
+            break;
         case 'h': usage(stdout); return -1;
         default: return sc_usage_error("eval", argv, optopt);
         }
@@ -500,6 +509,22 @@ static int run_stdin(const define_set *d, const eval_options *o)
     return status;
 }
 
+/* --file: no expression arguments, no --ulp (a program's control flow may differ between the
+ * precision and the double reference, so values cannot be paired). */
+static int run_file(const eval_options *o, const define_set *d, int n_expressions)
+{
+    if (n_expressions > 0) {
+        sc_error("eval: --file takes no expression arguments");
+        return SC_EXIT_USAGE;
+    }
+    if (o->ulp) {
+        sc_error("eval: --ulp is not supported with --file");
+        return SC_EXIT_USAGE;
+    }
+    eval_file_options fo = {o->prec, o->format, o->hex, o->strict, o->max_iterations};
+    return sc_eval_file(o->file, d->inputs, d->values, d->n, &fo);
+}
+
 static int run(int argc, char **argv)
 {
     eval_options o = {.prec = SC_HIGHP, .format = FMT_GLSL};
@@ -508,6 +533,8 @@ static int run(int argc, char **argv)
     if (status != SC_EXIT_OK)
         return status < 0 ? SC_EXIT_OK : status;
     expression_list list = {argv + optind, argc - optind};
+    if (o.file)
+        return run_file(&o, &d, list.count);
     return list.count ? run_list(&list, &d, &o) : run_stdin(&d, &o);
 }
 

@@ -47,6 +47,13 @@ struct sc_expr {
 /* Largest number of statements (and so of slots) in one program. */
 #define SC_EXPR_MAX_STATEMENTS 64
 
+/* ---- parsing helpers (parse.c), shared with the language of src/lang/ ---- */
+
+/* Grows *buf (of *cap elements of elem bytes) to hold need; 0, or -1 if out of memory. */
+int sc_expr_grow(void **buf, int *cap, int need, size_t elem);
+/* Component index of swizzle letter c in its set (xyzw, rgba, stpq), the set in *set; or -1. */
+int sc_swizzle_component(char c, int *set);
+
 /* ---- evaluation (eval.c), shared with the dual-number evaluator (dual.c) ---- */
 
 /* The values array of one evaluation of e with elements of `size` bytes: `local` (of

@@ -171,7 +171,7 @@ static int expect_punct(parser *ps, char c, const char *what)
 
 /* ---- building the tree ---- */
 
-static int grow(void **buf, int *cap, int need, size_t elem)
+int sc_expr_grow(void **buf, int *cap, int need, size_t elem)
 {
     if (need <= *cap)
         return 0;
@@ -192,7 +192,7 @@ static int grow(void **buf, int *cap, int need, size_t elem)
 static int add_node(parser *ps, expr_node node, int n_operands)
 {
     sc_expr *e = ps->e;
-    if (grow((void **)&e->nodes, &e->cap_nodes, e->n_nodes + 1, sizeof *e->nodes) < 0)
+    if (sc_expr_grow((void **)&e->nodes, &e->cap_nodes, e->n_nodes + 1, sizeof *e->nodes) < 0)
         return fail_msg(ps, 0, "out of memory");
     node.count = n_operands;
     node.base = ps->n_pending - n_operands;
@@ -350,8 +350,7 @@ static int parse_primary(parser *ps)
 
 /* ---- postfix: swizzles and indexing ---- */
 
-/* Component index of swizzle letter c in its set (xyzw, rgba, stpq), and the set in *set. */
-static int swizzle_component(char c, int *set)
+int sc_swizzle_component(char c, int *set)
 {
     static const char *const sets[] = {"xyzw", "rgba", "stpq"};
     for (int s = 0; s < 3; s++) {
@@ -382,7 +381,7 @@ static int parse_swizzle(parser *ps, int base)
     expr_node node = {.kind = NODE_SWIZZLE, .column = t.column, .swz_len = t.len};
     int first_set = -1;
     for (int i = 0; i < t.len; i++) {
-        int set, k = swizzle_component(t.start[i], &set);
+        int set, k = sc_swizzle_component(t.start[i], &set);
         if (k < 0 || k >= sc_type_size(bt))
             return fail(ps, t.column, "swizzle '%s' names a component a %s does not have", letters,
                         sc_type_name(bt));
