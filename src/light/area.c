@@ -193,15 +193,19 @@ static void closest_centre(const sc_light *light, const double pos[3], const dou
         L[i] = L0[i] + t * Ld[i];
 }
 
-/* Karis's α' = saturate(α + R/(2d)) for GGX: the specular part is scaled by (α/α')² (per axis,
- * α_x α_y / α'_x α'_y); 1 for the other BRDFs. */
-static double energy_normalisation(const sc_brdf *b, double R, double d)
+/* Karis's α' = saturate(α + w/(2d)) for GGX, per dimension of the emitter of half-width w
+ * seen at distance d: the specular part is scaled by α/α' across (w = R) and along (a tube:
+ * w = ℓ/2 + R) the emitter, (α/α')² for a sphere; 1 for the other BRDFs. Anisotropic α:
+ * √(α_x α_y). */
+static double energy_normalisation(const sc_brdf *b, double across, double along, double d)
 {
     if (b->kind != SC_BRDF_COOK_TORRANCE || b->D != SC_D_GGX)
         return 1.0;
-    double widen = d > 0.0 ? R / (2.0 * d) : 1.0;
-    double ax = fmax(b->ax, 1e-4), ay = fmax(b->ay, 1e-4);
-    return ax / fmin(1.0, ax + widen) * (ay / fmin(1.0, ay + widen));
+    double alpha = sqrt(fmax(b->ax, 1e-4) * fmax(b->ay, 1e-4));
+    if (!(d > 0.0))
+        return alpha * alpha;
+    return alpha / fmin(1.0, alpha + across / (2.0 * d)) *
+           (alpha / fmin(1.0, alpha + along / (2.0 * d)));
 }
 
 /* The direction of the diffuse term: to the centre; where that is below the horizon, its
@@ -244,8 +248,10 @@ static void representative_method(const sc_light *light, area_integrand *g, cons
         memcpy(ls, r, sizeof ls);
     sc_brdf_eval(SC_DOUBLE, g->b, g->frame, ls, v, &ts);
     double cos_s = ts.cos_i > 0.0 ? ts.cos_i : 0.0;
-    double E_spec = d > R ? AREA_PI * (R / d) * (R / d) : AREA_PI;
-    double spec = energy_normalisation(g->b, R, d) * E_spec * cos_s;
+    double along = R + (light->kind == SC_LIGHT_TUBE ? 0.5 * tube_length(light) : 0.0);
+    /* the emitter's energy: its irradiance on a plane facing the representative point */
+    double E_spec = diffuse_irradiance(light, pos, ls);
+    double spec = energy_normalisation(g->b, R, along, d) * E_spec * cos_s;
     for (int i = 0; i < 3; i++)
         out->L[i] = g->Le[i] * (td.diffuse[i] * E_diffuse + ts.specular[i] * spec);
     memcpy(out->l, ls, sizeof out->l);
