@@ -233,6 +233,21 @@ static void print_row(const char *light, const char *brdf, const method_row *r, 
     fputs(format == CHECK_AREA_TABLE ? "\n" : format == CHECK_AREA_CSV ? "\"\n" : "\"}", stdout);
 }
 
+double check_area_error(const sc_light *proto, sc_area_method method, const sc_brdf *b,
+                        double ratio, double theta_l, double theta_v)
+{
+    sc_light light;
+    sc_area_result ref, r;
+    place(proto, ratio * light_size(proto), theta_l, &light);
+    light.area.samples = 0;
+    light.area.tol = REFERENCE_TOL;
+    double v[3] = {-sin(theta_v * radians), 0, cos(theta_v * radians)};
+    sc_area_eval(&light, SC_AREA_REFERENCE, b, &up_frame, origin, v, &ref);
+    if (sc_area_eval(&light, method, b, &up_frame, origin, v, &r) < 0)
+        return NAN;
+    return relative_error(r.L, ref.L);
+}
+
 int check_area_run(const char *light_spec, const sc_light *light, const char *brdf_spec,
                    const sc_brdf *brdf, check_area_format format)
 {
