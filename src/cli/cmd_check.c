@@ -253,7 +253,7 @@ static int run(int argc, char **argv)
                                 formats[o->format]);
         o->n = 0;
     }
-    if (status == SC_EXIT_OK && o->format == FMT_CSV)
+    if (status == SC_EXIT_OK && o->format == FMT_CSV && !o->light_spec)
         printf("brdf,theta_i,albedo_r,albedo_g,albedo_b,error,max_albedo,reciprocity_error,"
                "energy_conserving,reciprocal\n");
     for (int i = 0; status == SC_EXIT_OK && i < o->n; i++) {
