@@ -153,7 +153,8 @@ static void measure(method_row *row, const config *configs, int n, double refere
     double sum = 0.0;
     row->max_error = -1.0;
     row->counted = 0;
-    row->ns = row->method == SC_AREA_REFERENCE ? reference_ns : time_method(row->method, configs, n);
+    row->ns = row->method == SC_AREA_REFERENCE ? reference_ns
+                                               : time_method(row->method, configs, n);
     for (int i = 0; i < n; i++) {
         const config *c = &configs[i];
         double e;

@@ -198,11 +198,13 @@ static int check_mode(const check_options *o)
 
 static int parse_options(int argc, char **argv, check_options *o)
 {
-    static const struct option longs[] = {
-        {"brdf", required_argument, NULL, 'b'},  {"theta", required_argument, NULL, 't'},
-        {"light", required_argument, NULL, 'l'},
-        {"order", required_argument, NULL, 'o'}, {"format", required_argument, NULL, 'f'},
-        {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
+    static const struct option longs[] = {{"brdf", required_argument, NULL, 'b'},
+                                          {"theta", required_argument, NULL, 't'},
+                                          {"light", required_argument, NULL, 'l'},
+                                          {"order", required_argument, NULL, 'o'},
+                                          {"format", required_argument, NULL, 'f'},
+                                          {"help", no_argument, NULL, 'h'},
+                                          {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     long order;
     sc_getopt_reset();

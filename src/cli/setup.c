@@ -197,8 +197,9 @@ static int check_area(const shade_setup *s, int k, char *msg, size_t size)
     if (!sc_light_is_area(l->kind))
         return 0;
     if (s->model.kind != SC_MODEL_BRDF) {
-        snprintf(msg, size, "area lights need a BRDF (--brdf lambert, cook-torrance, ...), not a "
-                            "legacy lighting model");
+        snprintf(msg, size,
+                 "area lights need a BRDF (--brdf lambert, cook-torrance, ...), not a "
+                 "legacy lighting model");
         return -1;
     }
     return sc_area_method_applies(l->kind, l->area.method, &s->model.brdf, msg, size);

@@ -30,7 +30,14 @@ enum { MAX_CURVES = 8, ALBEDO_ORDER = 8 };
  * other side (the mirror direction meets the light's centre); d/s 3 and α 0.3 where fixed. */
 static const double area_theta = 30.0, area_ratio = 3.0, area_alpha = 0.3;
 static const double radians_per_degree = 0.017453292519943295;
-typedef enum { CURVE_ATTEN, CURVE_SPOT, CURVE_ALBEDO, LOBE, AREA_DISTANCE, AREA_ROUGHNESS } preset_kind;
+typedef enum {
+    CURVE_ATTEN,
+    CURVE_SPOT,
+    CURVE_ALBEDO,
+    LOBE,
+    AREA_DISTANCE,
+    AREA_ROUGHNESS
+} preset_kind;
 
 typedef struct {
     const char *column, *spec, *legend;
@@ -47,6 +54,7 @@ typedef struct {
 } preset;
 
 /* The area presets' curves: a shape at unit size and a method. */
+/* clang-format off */
 #define AREA_CURVES \
     {"sphere_representative", "sphere center=0,0,0 radius=1 method=representative-point", "sphere representative-point"}, \
     {"sphere_point", "sphere center=0,0,0 radius=1 method=point", "sphere point"}, \
@@ -54,7 +62,6 @@ typedef struct {
     {"tube_point", "tube p0=0,-2,0 p1=0,2,0 radius=1 method=point", "tube 4:1 point"}, \
     {"disk_point", "disk center=0,0,0 normal=0,0,-1 radius=1 method=point", "disk point"}, \
     {"rect_point", "rect center=0,0,0 edge1=2,0,0 edge2=0,1,0 method=point", "rect 2:1 point"}
-/* clang-format off */
 static const preset presets[] = {
     {"attenuation", CURVE_ATTEN, {"r=0:12:241"}, {
         {"none", "point pos=0,0,0 atten=none", "none"},

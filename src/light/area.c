@@ -71,7 +71,9 @@ double sc_area_extent(const sc_light *light)
     double R = light->area.radius, e[3];
     switch (light->kind) {
     case SC_LIGHT_TUBE: return 2.0 * R * tube_length(light) + AREA_PI * R * R;
-    case SC_LIGHT_RECT: area_cross(light->area.edge1, light->area.edge2, e); return sqrt(area_dot(e, e));
+    case SC_LIGHT_RECT:
+        area_cross(light->area.edge1, light->area.edge2, e);
+        return sqrt(area_dot(e, e));
     default: return AREA_PI * R * R;
     }
 }
@@ -92,7 +94,7 @@ static const char *const method_names[] = {"reference", "representative-point", 
 const char *sc_area_method_name(sc_area_method method)
 {
     return (unsigned)method < sizeof method_names / sizeof method_names[0] ? method_names[method]
-                                                                        : NULL;
+                                                                           : NULL;
 }
 
 int sc_area_method_applies(sc_light_kind kind, sc_area_method method, const sc_brdf *b, char *msg,
@@ -259,8 +261,7 @@ static void representative_method(const sc_light *light, area_integrand *g, cons
 }
 
 int sc_area_eval(const sc_light *light, sc_area_method method, const sc_brdf *b,
-                 const sc_frame *frame, const double pos[3], const double v[3],
-                 sc_area_result *out)
+                 const sc_frame *frame, const double pos[3], const double v[3], sc_area_result *out)
 {
     char msg[160];
     memset(out, 0, sizeof *out);
@@ -272,7 +273,8 @@ int sc_area_eval(const sc_light *light, sc_area_method method, const sc_brdf *b,
     if (!(out->r > 0.0))
         memcpy(out->l, frame->n, sizeof out->l);
     out->converged = 1;
-    if (!sc_light_is_area(light->kind) || sc_area_method_applies(light->kind, method, b, msg, sizeof msg) < 0)
+    if (!sc_light_is_area(light->kind) ||
+        sc_area_method_applies(light->kind, method, b, msg, sizeof msg) < 0)
         return -1;
     area_integrand g = {.b = b, .frame = frame, .v = v};
     memcpy(g.Le, light->intensity, sizeof g.Le);

@@ -201,7 +201,8 @@ static void disk_region(const sc_light *light, const double F[3], planar *s)
         return;
     double half = sqrt(R * R - q * q), u[2] = {m[0] / mm, m[1] / mm};
     for (int sgn = -1; sgn <= 1; sgn += 2)
-        add_break(s, s->cc[0] + q * u[0] - sgn * half * u[1], s->cc[1] + q * u[1] + sgn * half * u[0]);
+        add_break(s, s->cc[0] + q * u[0] - sgn * half * u[1],
+                  s->cc[1] + q * u[1] + sgn * half * u[0]);
 }
 
 static void sort_breaks(planar *s)
@@ -216,8 +217,7 @@ static void sort_breaks(planar *s)
 
 /* 1 and the region of a disk or rect seen from p, or 0 when it sends nothing to p: behind a
  * one-sided emitter, or p in its plane. */
-static int planar_setup(const sc_light *light, const double p[3], const sc_frame *frame,
-                        planar *s)
+static int planar_setup(const sc_light *light, const double p[3], const sc_frame *frame, planar *s)
 {
     memset(s, 0, sizeof *s);
     if (light->kind == SC_LIGHT_RECT)
@@ -276,8 +276,8 @@ static int ray_span(const planar *s, const double u[2], double *r0, double *r1)
     return hi > lo && isfinite(hi);
 }
 
-static void planar_panel(const planar *s, const gl_rule *r, double a, double b,
-                         area_integrand *g, double acc[3])
+static void planar_panel(const planar *s, const gl_rule *r, double a, double b, area_integrand *g,
+                         double acc[3])
 {
     for (int i = 0; i < r->n; i++) {
         double wpsi, psi = graded_node(r, i, a, b, &wpsi), u[2] = {cos(psi), sin(psi)}, r0, r1;
@@ -450,10 +450,7 @@ static void rule(const geometry *geo, const sc_frame *frame, int n, area_integra
         fan_rule(&geo->f, frame, &r, g, acc);
 }
 
-static double max_abs3(const double v[3])
-{
-    return fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
-}
+static double max_abs3(const double v[3]) { return fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2]))); }
 
 void area_reference(const sc_light *light, area_integrand *g, const double pos[3],
                     sc_area_result *out)

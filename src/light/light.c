@@ -137,7 +137,10 @@ double sc_spot_eval(sc_prec p, const sc_spot *s, double cos_s)
 
 /* ---- lights (docs/formulas.md §2) ---- */
 
-int sc_light_is_area(sc_light_kind kind) { return kind >= SC_LIGHT_SPHERE && kind <= SC_LIGHT_RECT; }
+int sc_light_is_area(sc_light_kind kind)
+{
+    return kind >= SC_LIGHT_SPHERE && kind <= SC_LIGHT_RECT;
+}
 
 void sc_light_init(sc_light *light, sc_light_kind kind)
 {
@@ -348,14 +351,22 @@ int sc_params_in_range(sc_prec p, const sc_param *params, int count, char *msg, 
 
 int sc_light_check_range(sc_prec p, const sc_light *l, char *msg, size_t size)
 {
-    const sc_param params[] = {{"I", l->intensity, 3},       {"amb", l->ambient, 3},
-                               {"diff", l->diffuse, 3},      {"spec", l->specular, 3},
-                               {"dir", l->dir, 3},           {"pos", l->pos, 3},
-                               {"sc", &l->atten.sc, 1},      {"sl", &l->atten.sl, 1},
-                               {"sq", &l->atten.sq, 1},      {"rstart", &l->atten.r_start, 1},
-                               {"rend", &l->atten.r_end, 1}, {"fmax", &l->atten.f_max, 1},
-                               {"fc", &l->atten.f_c, 1},     {"rc", &l->atten.r_c, 1},
-                               {"se", &l->atten.s_e, 1},     {"rmax", &l->atten.r_max, 1},
+    const sc_param params[] = {{"I", l->intensity, 3},
+                               {"amb", l->ambient, 3},
+                               {"diff", l->diffuse, 3},
+                               {"spec", l->specular, 3},
+                               {"dir", l->dir, 3},
+                               {"pos", l->pos, 3},
+                               {"sc", &l->atten.sc, 1},
+                               {"sl", &l->atten.sl, 1},
+                               {"sq", &l->atten.sq, 1},
+                               {"rstart", &l->atten.r_start, 1},
+                               {"rend", &l->atten.r_end, 1},
+                               {"fmax", &l->atten.f_max, 1},
+                               {"fc", &l->atten.f_c, 1},
+                               {"rc", &l->atten.r_c, 1},
+                               {"se", &l->atten.s_e, 1},
+                               {"rmax", &l->atten.r_max, 1},
                                {"exp", &l->spot.exponent, 1},
                                {"radius", &l->area.radius, 1},
                                {"p0", l->area.p0, 3},
@@ -380,8 +391,7 @@ static int validate_area(const sc_light *light, char *msg, size_t size)
                    a->edge1[2] * a->edge2[0] - a->edge1[0] * a->edge2[2],
                    a->edge1[0] * a->edge2[1] - a->edge1[1] * a->edge2[0]};
     if (light->kind == SC_LIGHT_RECT && (is_zero3(e) || !isfinite(e[0] + e[1] + e[2])))
-        return invalid(msg, size,
-                       "edge1, edge2: a degenerate rectangle (zero or parallel edges)");
+        return invalid(msg, size, "edge1, edge2: a degenerate rectangle (zero or parallel edges)");
     if (a->samples != 0 && (a->samples < 2 || a->samples > 512)) {
         snprintf(msg, size, "samples=%d: must be 2..512 (or 0: until tol)", a->samples);
         return -1;

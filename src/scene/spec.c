@@ -201,10 +201,10 @@ static const key_def *find_key(const key_def *keys, const char *key)
 static const struct {
     const char *alias, *key;
 } synonyms[] = {
-    {"shininess", "m"},  {"exponent", "m"},   {"exponent", "exp"},  {"roughness", "alpha"},
-    {"intensity", "I"},  {"position", "pos"}, {"direction", "dir"}, {"attenuation", "atten"},
-    {"color", "diff"},   {"colour", "diff"},  {"ambient", "amb"},   {"specular", "spec"},
-    {"diffuse", "diff"}, {"falloff", "exp"},  {"fresnel", "F"},     {"ndf", "D"},
+    {"shininess", "m"},  {"exponent", "m"},    {"exponent", "exp"},    {"roughness", "alpha"},
+    {"intensity", "I"},  {"position", "pos"},  {"direction", "dir"},   {"attenuation", "atten"},
+    {"color", "diff"},   {"colour", "diff"},   {"ambient", "amb"},     {"specular", "spec"},
+    {"diffuse", "diff"}, {"falloff", "exp"},   {"fresnel", "F"},       {"ndf", "D"},
     {"radiance", "L"},   {"centre", "center"}, {"position", "center"}, {"nodes", "samples"},
 };
 
@@ -321,7 +321,7 @@ static int ignored_keys(const write_log *log, const key_need *needs, size_t n_ne
 /* ---- lights ---- */
 
 static const char *const light_kinds[] = {"directional", "point", "spot", "sphere",
-                                           "tube",        "disk",  "rect", NULL};
+                                          "tube",        "disk",  "rect", NULL};
 static const char *const atten_names[] = {"none",  "inverse-square", "clq", "window",
                                           "pixar", "windowed",       NULL};
 static const char *const spot_names[] = {"opengl", "directx", "smoothstep", NULL};
@@ -462,9 +462,12 @@ static int check_required(const light_ctx *c, char *err, size_t size)
         size_t offset;
         const char *item;
     } required[] = {
-        {PNT | SPT, L(pos), "pos=X,Y,Z"},        {DIR | SPT, L(dir), "dir=X,Y,Z"},
-        {SPH | DSK | RCT, L(pos), "center=X,Y,Z"}, {TUB, L(area.p0), "p0=X,Y,Z"},
-        {TUB, L(area.p1), "p1=X,Y,Z"},           {SPH | TUB | DSK, L(area.radius), "radius=R"},
+        {PNT | SPT, L(pos), "pos=X,Y,Z"},
+        {DIR | SPT, L(dir), "dir=X,Y,Z"},
+        {SPH | DSK | RCT, L(pos), "center=X,Y,Z"},
+        {TUB, L(area.p0), "p0=X,Y,Z"},
+        {TUB, L(area.p1), "p1=X,Y,Z"},
+        {SPH | TUB | DSK, L(area.radius), "radius=R"},
         {DSK, L(area.normal), "normal=X,Y,Z"},
     };
     unsigned kind = 1u << c->spec.light.kind;

@@ -172,10 +172,11 @@ static void lambert_polygon_irradiance(void **state)
             for (int j = 0; j < 3; j++)
                 v[k][j] = c[j] + 0.5 * (s[k][0] * e1[j] + s[k][1] * e2[j]);
         char spec[256];
-        snprintf(spec, sizeof spec, "rect center=%.17g,%.17g,%.17g edge1=%.17g,%.17g,%.17g "
-                 "edge2=%.17g,%.17g,%.17g two-sided=1", c[0], c[1], c[2], e1[0], e1[1], e1[2],
-                 e2[0], e2[1], e2[2]);
-        assert_rel(irradiance(spec, n), lambert_polygon((const double (*)[3])v, 4, n), 1e-10);
+        snprintf(spec, sizeof spec,
+                 "rect center=%.17g,%.17g,%.17g edge1=%.17g,%.17g,%.17g "
+                 "edge2=%.17g,%.17g,%.17g two-sided=1",
+                 c[0], c[1], c[2], e1[0], e1[1], e1[2], e2[0], e2[1], e2[2]);
+        assert_rel(irradiance(spec, n), lambert_polygon((const double(*)[3])v, 4, n), 1e-10);
     }
 }
 
@@ -191,8 +192,8 @@ static void sphere_above_horizon_is_a_point_light(void **state)
     assert_rel(E, pi * (R / d) * (R / d) * cos(theta), 1e-10);
     assert_rel(E, 0.170043690397, 1e-11);
     sc_light l = parsed(spec);
-    assert_rel(shade_area(&l, SC_AREA_POINT, "lambert diff=3.14159265358979323846", up, up, NULL), E,
-               1e-14);
+    assert_rel(shade_area(&l, SC_AREA_POINT, "lambert diff=3.14159265358979323846", up, up, NULL),
+               E, 1e-14);
 }
 
 /* Across the horizon: the reference and the representative point's diffuse term (exact for
@@ -209,8 +210,8 @@ static void sphere_across_horizon(void **state)
                  d * cos(theta), d * sin(sigma));
         assert_rel(irradiance(spec, up), snyder(theta, sigma), 1e-10);
         sc_light l = parsed(spec);
-        assert_rel(shade_area(&l, SC_AREA_REPRESENTATIVE, "lambert diff=3.14159265358979323846",
-                              up, up, NULL),
+        assert_rel(shade_area(&l, SC_AREA_REPRESENTATIVE, "lambert diff=3.14159265358979323846", up,
+                              up, NULL),
                    snyder(theta, sigma), 1e-12);
     }
 }
@@ -235,10 +236,12 @@ static void quadrature_converges_geometrically(void **state)
     double error[4];
     for (int k = 0; k < 4; k++) {
         char spec[160];
-        snprintf(spec, sizeof spec, "rect center=0,0,1 edge1=1,0,0 edge2=0,-1,0 samples=%d", 2 << k);
+        snprintf(spec, sizeof spec, "rect center=0,0,1 edge1=1,0,0 edge2=0,-1,0 samples=%d",
+                 2 << k);
         sc_light l = parsed(spec);
-        error[k] = fabs(shade_area(&l, SC_AREA_REFERENCE, "cook-torrance diff=0 alpha=0.3 F=none",
-                                   n, v, NULL) - exact);
+        error[k] = fabs(
+            shade_area(&l, SC_AREA_REFERENCE, "cook-torrance diff=0 alpha=0.3 F=none", n, v, NULL) -
+            exact);
     }
     for (int k = 0; k + 1 < 3; k++)
         if (!(error[k + 1] < error[k] / (k ? 500 : 40)))
@@ -292,15 +295,18 @@ static void documented_results(void **state)
     (void)state;
     double n[3] = {0, 0, 1};
     const char *inside[] = {"sphere center=0,0,0.5 radius=1", "sphere center=0,0,1 radius=1",
-                            "tube p0=-1,0,0 p1=1,0,0 radius=0.5", "tube p0=1,0,0 p1=3,0,0 radius=1"};
+                            "tube p0=-1,0,0 p1=1,0,0 radius=0.5",
+                            "tube p0=1,0,0 p1=3,0,0 radius=1"};
     for (size_t i = 0; i < sizeof inside / sizeof inside[0]; i++) {
         sc_light l = parsed(inside[i]);
         assert_rel(shade_area(&l, SC_AREA_REFERENCE, "lambert diff=0.5", n, n, NULL), 0.5, 1e-12);
         for (int m = SC_AREA_REFERENCE; m <= SC_AREA_POINT; m++)
             assert_false(isnan(shade_area(&l, (sc_area_method)m, "cook-torrance", n, n, NULL)));
     }
-    const char *dark[] = {"sphere center=0,0,-2 radius=1", "sphere center=0,0,2 radius=0",
-                          "tube p0=-1,0,-1 p1=1,0,-1 radius=0.5", "disk center=0,0,0 normal=0,0,-1 radius=1",
+    const char *dark[] = {"sphere center=0,0,-2 radius=1",
+                          "sphere center=0,0,2 radius=0",
+                          "tube p0=-1,0,-1 p1=1,0,-1 radius=0.5",
+                          "disk center=0,0,0 normal=0,0,-1 radius=1",
                           "disk center=0,0,1 normal=0,0,1 radius=1",
                           "rect center=0,0,0 edge1=1,0,0 edge2=0,1,0 two-sided=1",
                           "rect center=0,0,-1 edge1=1,0,0 edge2=0,1,0 two-sided=1"};
