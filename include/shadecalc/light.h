@@ -4,8 +4,10 @@
  *   sc_atten, sc_atten_eval        f_d(r): none, inverse-square, clq, window, pixar,
  *                                  windowed inverse-square (UE4/Filament)
  *   sc_spot, sc_spot_eval          I_L(l)/I_Lmax from cos θ_s: opengl, directx, smoothstep (pbrt)
- *   sc_light, sc_light_eval        l and E_L at a surface point: directional, point, spot
- *   sc_light_validate              the parameter domains of docs/formulas.md §3–§4, as a message
+ *   sc_light, sc_light_eval        l and E_L at a surface point: directional, point, spot; for
+ *                                  the area lights (sphere, tube, disk, rect) those of their
+ *                                  point-light stand-in (shadecalc/area.h evaluates them)
+ *   sc_light_validate              the parameter domains of docs/formulas.md §3–§5, as a message
  *
  * Every function takes the precision p (shadecalc/precision.h): SC_DOUBLE is the reference;
  * in highp and mediump each named intermediate quantity is rounded to the precision and the
@@ -56,7 +58,41 @@ typedef struct {
     double inner, outer; /* directx, smoothstep: half-angles θ_p <= θ_u in degrees */
 } sc_spot;
 
-typedef enum { SC_LIGHT_DIRECTIONAL, SC_LIGHT_POINT, SC_LIGHT_SPOT } sc_light_kind;
+typedef enum {
+    SC_LIGHT_DIRECTIONAL,
+    SC_LIGHT_POINT,
+    SC_LIGHT_SPOT,
+    SC_LIGHT_SPHERE, /* the area lights (docs/formulas.md §5): sc_light.area */
+    SC_LIGHT_TUBE,
+    SC_LIGHT_DISK,
+    SC_LIGHT_RECT
+} sc_light_kind;
+
+/* How an area light's L_o is evaluated (shadecalc/area.h, docs/formulas.md §5). */
+typedef enum {
+    SC_AREA_REFERENCE,      /* the converging quadrature over the emitter, any BRDF */
+    SC_AREA_REPRESENTATIVE, /* Karis 2013's representative point: sphere, tube */
+    SC_AREA_POINT           /* a point light at the centre with I = L_e · area */
+} sc_area_method;
+
+/* The emitter of an area light: a uniform, Lambertian emitter of radiance L_e
+ * (sc_light.intensity) whose centre is sc_light.pos (sphere, disk, rect).
+ *   sphere  radius
+ *   tube    a capsule: the segment p0–p1 swept by a ball of `radius` (hemispherical ends)
+ *   disk    radius, normal
+ *   rect    corners pos ± edge1/2 ± edge2/2; its normal is edge1 × edge2 (normalized)
+ * A one-sided disk or rect emits toward its normal only; two_sided toward both sides. */
+typedef struct {
+    sc_area_method method;
+    double radius;             /* sphere, tube, disk (>= 0; 0 emits nothing) */
+    double p0[3], p1[3];       /* tube */
+    double normal[3];          /* disk */
+    double edge1[3], edge2[3]; /* rect */
+    int two_sided;             /* disk, rect (default 0) */
+    int samples; /* reference: Gauss–Legendre nodes per panel and dimension, 2..512; 0 (the
+                  * default) doubles them from 8 until the error estimate is below tol */
+    double tol;  /* reference: relative error goal when samples = 0 (default 1e-9) */
+} sc_area;
 
 typedef struct {
     sc_light_kind kind;
@@ -69,7 +105,11 @@ typedef struct {
     double range; /* direct3d9: no light beyond this distance (default +Inf) */
     sc_atten atten;
     sc_spot spot;
+    sc_area area; /* sphere, tube, disk, rect */
 } sc_light;
+
+/* Whether a kind is an area light (sphere, tube, disk, rect). */
+int sc_light_is_area(sc_light_kind kind);
 
 /* What a light gives at a surface point, with its intermediates (for --explain). */
 typedef struct {
@@ -81,13 +121,16 @@ typedef struct {
     double E[3];  /* E_L = intensity · f_d · spot */
 } sc_light_sample;
 
-/* Defaults: inverse-square attenuation, opengl spot with cutoff 180 (no cone), colours 1. */
+/* Defaults: inverse-square attenuation, opengl spot with cutoff 180 (no cone), colours 1;
+ * area lights: method reference, one-sided, samples 0 and tol 1e-9, normal (0, 0, -1). */
 void sc_light_init(sc_light *light, sc_light_kind kind);
 
 double sc_atten_eval(sc_prec p, const sc_atten *a, double r);
 double sc_spot_eval(sc_prec p, const sc_spot *s, double cos_s);
 
-/* l and E_L of `light` at point `pos` with unit normal n (used only when pos is on the light). */
+/* l and E_L of `light` at point `pos` with unit normal n (used only when pos is on the light).
+ * An area light gives those of its point-light stand-in: a point light at its centre (a
+ * tube's: the midpoint of p0–p1) with I = L_e · sc_area_extent (shadecalc/area.h). */
 void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const double n[3],
                    sc_light_sample *out);
 
@@ -96,8 +139,10 @@ void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const 
  * shading equation never makes 0·∞ = NaN of an overflowed intensity. */
 double sc_mul_reach(sc_prec p, double a, double b);
 
-/* 0 if the parameters are inside their domains (docs/formulas.md §3–§4), else -1 with a message naming the
- * key and its valid range ("cutoff=120: spot=opengl takes 0..90 or 180"). */
+/* 0 if the parameters are inside their domains (docs/formulas.md §3–§5), else -1 with a message naming the
+ * key and its valid range ("cutoff=120: spot=opengl takes 0..90 or 180"). Area lights: radius
+ * >= 0, a disk's normal not zero, a rect's edges neither zero nor parallel, samples 0 or
+ * 2..512, tol in (0, 1), and a method that applies to the kind (sc_area_method_applies). */
 int sc_light_validate(const sc_light *light, char *msg, size_t size);
 
 /* Named parameters, for range checks: v[0..n-1] are the values of key. */

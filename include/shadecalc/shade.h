@@ -8,6 +8,8 @@
  *   sc_shade                L_o at a point, with every intermediate per light (for --explain)
  *
  * docs/formulas.md §6:  L_o = c_amb ⊙ L_A + Σ_k [ c_amb ⊙ L_A,k + f(l_k, v) ⊙ E_L,k · cos̄θ_i,k ]
+ *           where an area light's term is sc_area_eval's ∫ f L_e cos̄θ_i dω by its method
+ *           (docs/formulas.md §5), rounded to the precision
  * ads:      L_o = k_a ⊙ (L_A + Σ_k L_A,k) + Σ_k att·spot·[ I⊙c_d,k ⊙ k_d (n·l)⁺ + I⊙c_s,k ⊙ k_s S ]
  *           with S = 0, (r·v)⁺^m or (n·h)⁺^m for the lambert, phong and blinn-phong forms and
  *           k_d, k_s, k_a, m the model's diff, spec, amb, m (the lecture's shader form: light
@@ -25,6 +27,7 @@
 #define SHADECALC_SHADE_H
 
 #include "shadecalc/api.h"
+#include "shadecalc/area.h"
 #include "shadecalc/brdf.h"
 #include "shadecalc/light.h"
 
@@ -53,9 +56,11 @@ typedef struct {
     double ambient[3]; /* L_A (opengl a_cs, direct3d9 Ga) */
 } sc_scene;
 
-/* One light's share of L_o. */
+/* One light's share of L_o. An area light (SC_MODEL_BRDF only) fills `light` with its
+ * point-light stand-in (sc_light_eval), `area` with its result and `brdf` at area.l. */
 typedef struct {
     sc_light_sample light;
+    sc_area_result area;
     sc_brdf_terms brdf; /* SC_MODEL_BRDF; legacy models fill cos_i, cos_h, diffuse, specular */
     double ambient[3];  /* its ambient term */
     double contribution[3];

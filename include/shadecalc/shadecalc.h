@@ -8,6 +8,7 @@
 #define SHADECALC_SHADECALC_H
 
 #include "shadecalc/accuracy.h"
+#include "shadecalc/area.h"
 #include "shadecalc/batch.h"
 #include "shadecalc/brdf.h"
 #include "shadecalc/check.h"

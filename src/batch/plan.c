@@ -103,6 +103,8 @@ static int light_fits(const sc_light *l, int k, sc_batch_light *out, char *why, 
     static const sc_batch_light_kind kinds[] = {SC_BATCH_DIRECTIONAL, SC_BATCH_POINT,
                                                 SC_BATCH_SPOT};
     int directional = l->kind == SC_LIGHT_DIRECTIONAL;
+    if (sc_light_is_area(l->kind))
+        return refuse(why, size, "light %d: area lights are not in the kernel", k + 1);
     if (isfinite(l->range))
         return refuse(why, size, "light %d: a range (direct3d9) is not in the kernel", k + 1);
     if (l->atten.kind != (directional ? SC_ATTEN_NONE : SC_ATTEN_INVERSE_SQUARE))

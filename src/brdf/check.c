@@ -5,6 +5,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "util/quadrature.h"
+
 static const double pi = 3.14159265358979323846;
 /* Panels shrink geometrically toward the lobe: π·2^-k for k = 1..K, K at least MIN_PANEL_EXP
  * and enough for the narrowest panel to be an eighth of the lobe's width. A lobe narrower than
@@ -13,31 +15,6 @@ static const double pi = 3.14159265358979323846;
  * a staircase with steps above 0.1 %; K would exceed MAX_PANEL_EXP. */
 #define MIN_LOBE_WIDTH 1e-6
 enum { MAX_ORDER = 32, MIN_PANEL_EXP = 12, MAX_PANEL_EXP = 25 };
-
-/* Gauss–Legendre nodes and weights on [−1, 1] by Newton's method on P_n (Numerical Recipes
- * gauleg); n <= MAX_ORDER. */
-static void gauss_legendre(int n, double *x, double *w)
-{
-    for (int i = 0; i < (n + 1) / 2; i++) {
-        double z = cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
-        for (int iter = 0; iter < 100; iter++) {
-            double p0 = 1.0, p1 = 0.0;
-            for (int j = 1; j <= n; j++) { /* P_j = ((2j−1) z P_{j−1} − (j−1) P_{j−2}) / j */
-                double p2 = p1;
-                p1 = p0;
-                p0 = ((2.0 * j - 1.0) * z * p1 - (j - 1.0) * p2) / j;
-            }
-            dp = n * (z * p0 - p1) / (z * z - 1.0);
-            double dz = p0 / dp;
-            z -= dz;
-            if (fabs(dz) < 1e-16)
-                break;
-        }
-        x[i] = -z;
-        x[n - 1 - i] = z;
-        w[i] = w[n - 1 - i] = 2.0 / ((1.0 - z * z) * dp * dp);
-    }
-}
 
 /* Sorted, de-duplicated breakpoints in [lo, hi]: the ends, each `centre ± π·2^-k` for
  * k = 1..panel_exp (panels shrinking geometrically toward the lobe), and `extra`. */
@@ -77,7 +54,7 @@ static int breakpoints(double lo, double hi, double centre, const double *extra,
 static int composite_nodes(const double *bp, int n_bp, int order, double *node, double *weight)
 {
     double x[MAX_ORDER], w[MAX_ORDER];
-    gauss_legendre(order, x, w);
+    sc_gauss_legendre(order, x, w);
     int n = 0;
     for (int p = 0; p + 1 < n_bp; p++)
         for (int k = 0; k < order; k++) {

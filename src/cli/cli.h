@@ -51,6 +51,9 @@ int sc_getopt(int argc, char **argv, const char *optstring, const struct option 
  * any other name, and "-", is OK. */
 int sc_check_output_name(const char *cmd, const char *option, const char *path, const char *format);
 
+/* s as a JSON string, quoted, with '"', '\\' and control characters escaped. */
+void sc_print_json_string(FILE *out, const char *s);
+
 /* Strict number parsing: the whole string must be a number. Returns 0 on success, -1 if not. */
 int sc_parse_double(const char *s, double *out);
 int sc_parse_long(const char *s, long *out);

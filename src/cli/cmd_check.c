@@ -4,12 +4,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/check_area.h"
 #include "cli/cli.h"
 #include "shadecalc/check.h"
 #include "shadecalc/scene.h"
 
 enum { MAX_BRDFS = 16, MAX_THETAS = 64 };
-enum { FMT_TABLE, FMT_CSV };
+enum { FMT_TABLE, FMT_CSV, FMT_JSON };
 
 typedef struct {
     const char *specs[MAX_BRDFS];
@@ -19,21 +20,30 @@ typedef struct {
     int n_theta;
     int order;
     int format;
+    const char *light_spec; /* --light: the area light mode */
+    sc_light light;
 } check_options;
 
 static void usage(FILE *out)
 {
     fprintf(out,
             "usage: shadecalc check --brdf SPEC [--brdf SPEC...] [OPTIONS]\n"
+            "       shadecalc check --light SPEC --brdf SPEC [--format F]\n"
             "\n"
             "For each BRDF: the directional albedo a(theta_i) = integral of f(l,v) cos(theta_o)\n"
             "over the hemisphere, with an error estimate; its maximum; the worst reciprocity\n"
             "error |f(l,v) - f(v,l)| / max(f); flags for albedo > 1 and non-reciprocity.\n"
+            "With --light (a sphere, tube, disk or rect light): each method's maximum and mean\n"
+            "relative error against the converged reference over a standard set of\n"
+            "configurations (distance/size, light and view angles, roughness), its worst\n"
+            "configuration and its time per evaluation.\n"
             "\n"
             "  -b, --brdf SPEC     a BRDF as for 'shadecalc shade' (repeatable)\n"
+            "  -l, --light SPEC    an area light as for 'shadecalc shade' (its shape is kept,\n"
+            "                      its position is each configuration's)\n"
             "  -t, --theta LIST    angles of incidence in degrees (default 0,5,...,85,89,89.9)\n"
             "  -o, --order N       Gauss-Legendre nodes per panel, 2..32 (default 16)\n"
-            "  -f, --format F      table|csv (default table)\n"
+            "  -f, --format F      table|csv, and json with --light (default table)\n"
             "  -h, --help          this help\n");
 }
 
@@ -136,18 +146,72 @@ static int add_brdf(check_options *o, const char *spec)
     return SC_EXIT_OK;
 }
 
+static int set_light(check_options *o, const char *spec)
+{
+    char err[256];
+    int parsed = sc_light_parse(spec, &o->light, err, sizeof err);
+    if (parsed < 0) {
+        sc_error("%s", err);
+        return SC_EXIT_USAGE;
+    }
+    if (parsed > 0)
+        sc_warning("%s", err);
+    if (o->light_spec || !sc_light_is_area(o->light.kind)) {
+        sc_error("check: --light %s: %s", spec,
+                 o->light_spec ? "give one --light" : "an area light (sphere, tube, disk, rect)");
+        return SC_EXIT_USAGE;
+    }
+    o->light_spec = spec;
+    return SC_EXIT_OK;
+}
+
+static int parse_format(check_options *o, const char *arg)
+{
+    static const char *const names[] = {"table", "csv", "json"};
+    for (int i = 0; i < 3; i++)
+        if (strcmp(arg, names[i]) == 0) {
+            o->format = i;
+            return SC_EXIT_OK;
+        }
+    sc_error("check: unknown format '%s' (table, csv, json)", arg);
+    return SC_EXIT_USAGE;
+}
+
+/* The combinations the two modes take. */
+static int check_mode(const check_options *o)
+{
+    if (o->n == 0) {
+        sc_error("check: no --brdf SPEC given (see 'shadecalc check --help')");
+        return SC_EXIT_USAGE;
+    }
+    if (o->light_spec && o->n != 1) {
+        sc_error("check: --light takes one --brdf");
+        return SC_EXIT_USAGE;
+    }
+    if (!o->light_spec && o->format == FMT_JSON) {
+        sc_error("check: --format json is for --light (area lights); the albedo table is "
+                 "table or csv");
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}
+
 static int parse_options(int argc, char **argv, check_options *o)
 {
-    static const struct option longs[] = {
-        {"brdf", required_argument, NULL, 'b'},  {"theta", required_argument, NULL, 't'},
-        {"order", required_argument, NULL, 'o'}, {"format", required_argument, NULL, 'f'},
-        {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
+    static const struct option longs[] = {{"brdf", required_argument, NULL, 'b'},
+                                          {"theta", required_argument, NULL, 't'},
+                                          {"light", required_argument, NULL, 'l'},
+                                          {"order", required_argument, NULL, 'o'},
+                                          {"format", required_argument, NULL, 'f'},
+                                          {"help", no_argument, NULL, 'h'},
+                                          {NULL, 0, NULL, 0}};
     int c, status = SC_EXIT_OK;
     long order;
     sc_getopt_reset();
-    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "b:t:o:f:h", longs)) != -1) {
+    while (status == SC_EXIT_OK && (c = sc_getopt(argc, argv, "b:l:t:o:f:h", longs)) != -1) {
         switch (c) {
         case 'b': status = add_brdf(o, optarg); break;
+        case 'l': status = set_light(o, optarg); break;
         case 't': status = parse_thetas(optarg, o); break;
         case 'o':
             if (sc_parse_long(optarg, &order) < 0 || order < 2 || order > 32) {
@@ -156,13 +220,7 @@ static int parse_options(int argc, char **argv, check_options *o)
             }
             o->order = (int)order;
             break;
-        case 'f':
-            if (strcmp(optarg, "table") && strcmp(optarg, "csv")) {
-                sc_error("check: unknown format '%s' (table, csv)", optarg);
-                status = SC_EXIT_USAGE;
-            }
-            o->format = strcmp(optarg, "csv") == 0 ? FMT_CSV : FMT_TABLE;
-            break;
+        case 'f': status = parse_format(o, optarg); break;
         case 'h': usage(stdout); return -1;
         default: return sc_usage_error("check", argv, optopt);
         }
@@ -171,11 +229,7 @@ static int parse_options(int argc, char **argv, check_options *o)
         sc_error("check: unexpected argument '%s'", argv[optind]);
         status = SC_EXIT_USAGE;
     }
-    if (status == SC_EXIT_OK && o->n == 0) {
-        sc_error("check: no --brdf SPEC given (see 'shadecalc check --help')");
-        status = SC_EXIT_USAGE;
-    }
-    return status;
+    return status == SC_EXIT_OK ? check_mode(o) : status;
 }
 
 static int run(int argc, char **argv)
@@ -194,7 +248,14 @@ static int run(int argc, char **argv)
     memcpy(o->theta, default_theta, sizeof default_theta);
     o->order = 16;
     int status = parse_options(argc, argv, o);
-    if (status == SC_EXIT_OK && o->format == FMT_CSV)
+    if (status == SC_EXIT_OK && o->light_spec) {
+        static const check_area_format formats[] = {CHECK_AREA_TABLE, CHECK_AREA_CSV,
+                                                    CHECK_AREA_JSON};
+        status = check_area_run(o->light_spec, &o->light, o->specs[0], &o->models[0].brdf,
+                                formats[o->format]);
+        o->n = 0;
+    }
+    if (status == SC_EXIT_OK && o->format == FMT_CSV && !o->light_spec)
         printf("brdf,theta_i,albedo_r,albedo_g,albedo_b,error,max_albedo,reciprocity_error,"
                "energy_conserving,reciprocal\n");
     for (int i = 0; status == SC_EXIT_OK && i < o->n; i++) {
@@ -209,5 +270,7 @@ static int run(int argc, char **argv)
     return status < 0 ? SC_EXIT_OK : status;
 }
 
-const sc_command sc_cmd_check = {"check", "albedo and reciprocity of BRDFs: are they physical?",
+const sc_command sc_cmd_check = {"check",
+                                 "albedo and reciprocity of BRDFs; error and cost of area "
+                                 "light methods",
                                  run};

@@ -187,23 +187,6 @@ static void print_glsl(FILE *out, const sc_value *v, const sc_value *ref, const 
     fputc('\n', out);
 }
 
-void sc_print_json_string(FILE *out, const char *s)
-{
-    fputc('"', out);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\')
-            fprintf(out, "\\%c", c);
-        else if (c == '\t' || c == '\n' || c == '\r')
-            fprintf(out, "\\%c", c == '\t' ? 't' : c == '\n' ? 'n' : 'r');
-        else if (c < 0x20)
-            fprintf(out, "\\u%04x", c);
-        else
-            fputc(c, out);
-    }
-    fputc('"', out);
-}
-
 static void print_json(FILE *out, const char *src, const sc_value *v, const sc_value *ref,
                        const eval_options *o)
 {

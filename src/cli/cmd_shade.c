@@ -23,7 +23,8 @@ static void usage(FILE *out)
             "Evaluates L_o = c_amb*L_A + sum_k [c_amb*L_A,k + f(l_k, v)*E_L,k*cos(theta_i,k)]\n"
             "at one surface point and prints it as R G B.\n"
             "\n"
-            "  -l, --light SPEC     a light (repeatable): directional|point|spot key=value...\n"
+            "  -l, --light SPEC     a light (repeatable): directional|point|spot|sphere|tube|\n"
+            "                       disk|rect key=value...\n"
             "  -b, --brdf SPEC      the model: lambert|phong|blinn-phong|ward|oren-nayar|\n"
             "                       cook-torrance|ads|opengl|direct3d9 key=value...\n"
             "  -a, --ambient C      global ambient radiance L_A (R,G,B or one number)\n"
@@ -64,7 +65,9 @@ static void triple(FILE *out, const double v[3], sc_prec p, int json)
 
 static const char *light_kind_name(sc_light_kind k)
 {
-    return k == SC_LIGHT_DIRECTIONAL ? "directional" : k == SC_LIGHT_POINT ? "point" : "spot";
+    static const char *const names[] = {"directional", "point", "spot", "sphere",
+                                        "tube",        "disk",  "rect"};
+    return names[k];
 }
 
 /* One intermediate of --explain: its label in the text form (a leading "\n" starts a line),
@@ -77,10 +80,34 @@ typedef struct {
 
 enum { MAX_TERMS = 20 };
 
-/* The intermediates of light k, in the order they are printed; returns their count. */
-static int light_terms(const sc_light *light, const sc_light_terms *t, const sc_model *m,
-                       explain_term *out)
+/* An area light's: its direction and distance to the centre (or the representative point),
+ * the integral and, for the reference, its error estimate and nodes. */
+static int area_terms(const sc_light_terms *t, double *nodes, explain_term *out)
 {
+    const sc_area_result *a = &t->area;
+    int n = 0;
+    nodes[0] = a->nodes;
+    nodes[1] = (double)a->evaluations;
+    nodes[2] = a->converged;
+    out[n++] = (explain_term){"  l = ", "l", 3, a->l};
+    out[n++] = (explain_term){"  r = ", "r", 1, &a->r};
+    out[n++] = (explain_term){"\n  integral ", "integral", 3, a->L};
+    out[n++] = (explain_term){"  error estimate ", "error", 3, a->error};
+    out[n++] = (explain_term){"\n  nodes = ", "nodes", 1, &nodes[0]};
+    out[n++] = (explain_term){"  evaluations = ", "evaluations", 1, &nodes[1]};
+    out[n++] = (explain_term){"  converged = ", "converged", 1, &nodes[2]};
+    out[n++] = (explain_term){"\n  ambient ", "ambient", 3, t->ambient};
+    out[n++] = (explain_term){"  contribution ", "contribution", 3, t->contribution};
+    return n;
+}
+
+/* The intermediates of light k, in the order they are printed; returns their count. nodes
+ * holds an area light's counts as numbers. */
+static int light_terms(const sc_light *light, const sc_light_terms *t, const sc_model *m,
+                       double *nodes, explain_term *out)
+{
+    if (sc_light_is_area(light->kind))
+        return area_terms(t, nodes, out);
     const sc_light_sample *ls = &t->light;
     int n = 0, brdf = m->kind == SC_MODEL_BRDF;
     int ward = brdf && m->brdf.kind == SC_BRDF_WARD;
@@ -124,8 +151,12 @@ static void explain_light(FILE *out, int k, const sc_light *light, const sc_ligh
                           const sc_model *m, sc_prec p)
 {
     explain_term terms[MAX_TERMS];
-    int n = light_terms(light, t, m, terms);
-    fprintf(out, "light %d (%s)\n", k + 1, light_kind_name(light->kind));
+    double nodes[3];
+    int n = light_terms(light, t, m, nodes, terms);
+    fprintf(out, "light %d (%s", k + 1, light_kind_name(light->kind));
+    if (sc_light_is_area(light->kind))
+        fprintf(out, ", method=%s", sc_area_method_name(light->area.method));
+    fputs(")\n", out);
     for (int i = 0; i < n; i++) {
         fputs(terms[i].text, out);
         term_value(out, &terms[i], p, 0);
@@ -168,8 +199,11 @@ static void print_csv(const sc_shade_result *r, const shade_options *o)
 static void json_light(const sc_light *light, const sc_light_terms *t, const sc_model *m, sc_prec p)
 {
     explain_term terms[MAX_TERMS];
-    int n = light_terms(light, t, m, terms);
+    double nodes[3];
+    int n = light_terms(light, t, m, nodes, terms);
     printf("{\"kind\": \"%s\"", light_kind_name(light->kind));
+    if (sc_light_is_area(light->kind))
+        printf(", \"method\": \"%s\"", sc_area_method_name(light->area.method));
     for (int i = 0; i < n; i++) {
         printf(", \"%s\": ", terms[i].key);
         term_value(stdout, &terms[i], p, 1);

@@ -23,9 +23,9 @@ int sc_eval_file(const char *path, const sc_expr_input *defines, const sc_value 
                  int n_defines, const eval_file_options *o);
 
 /* Shared with cmd_eval.c: a component in precision p (the shortest decimal, or its bits with
- * hex; NaN, Inf and bits quoted in JSON), a JSON string and an RFC 4180 CSV field. */
+ * hex; NaN, Inf and bits quoted in JSON) and an RFC 4180 CSV field (a JSON string:
+ * sc_print_json_string, cli/cli.h). */
 void sc_print_float(FILE *out, double x, sc_prec p, int hex, int json);
-void sc_print_json_string(FILE *out, const char *s);
 void sc_print_csv_field(FILE *out, const char *s);
 
 #endif

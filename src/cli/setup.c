@@ -190,11 +190,27 @@ int setup_point(const shade_setup *s, sc_shade_point *out)
     return SC_EXIT_OK;
 }
 
+/* An area light needs a BRDF its method takes (shadecalc/area.h). */
+static int check_area(const shade_setup *s, int k, char *msg, size_t size)
+{
+    const sc_light *l = &s->lights[k];
+    if (!sc_light_is_area(l->kind))
+        return 0;
+    if (s->model.kind != SC_MODEL_BRDF) {
+        snprintf(msg, size,
+                 "area lights need a BRDF (--brdf lambert, cook-torrance, ...), not a "
+                 "legacy lighting model");
+        return -1;
+    }
+    return sc_area_method_applies(l->kind, l->area.method, &s->model.brdf, msg, size);
+}
+
 int setup_check_range(const shade_setup *s, sc_prec p)
 {
     char msg[160];
     for (int k = 0; k < s->n_lights; k++)
-        if (sc_light_check_range(p, &s->lights[k], msg, sizeof msg) < 0) {
+        if (sc_light_check_range(p, &s->lights[k], msg, sizeof msg) < 0 ||
+            check_area(s, k, msg, sizeof msg) < 0) {
             sc_error("light %d: %s", k + 1, msg);
             return SC_EXIT_USAGE;
         }

@@ -56,7 +56,7 @@ int sweep_shade_plan(const sweep_setup_args *a, const sc_sweep_grid *g, sc_prec 
 
 /* Presets (sweep_presets.c): the lecture's figures. */
 int sweep_preset_exists(const char *name);
-const char *sweep_preset_names(void); /* "attenuation|spot|lobe|albedo" */
+const char *sweep_preset_names(void); /* "attenuation|spot|...|area-roughness" */
 /* Adds the preset's variables to g (those the user gave keep the user's values). */
 int sweep_preset_vars(const char *name, sc_sweep_grid *g);
 /* The plan; the lobe preset shades a (the user's --brdf, or its default). */

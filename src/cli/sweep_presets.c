@@ -6,6 +6,9 @@
  *                 BRDF Explorer's polar view
  *   albedo        the directional albedo a(θ_i) of several models (as `shadecalc check`), every
  *                 degree up to 89°, with the line a = 1 of energy conservation
+ *   area-distance the relative error of each area light method (as `shadecalc check --light`)
+ *                 against the distance/size ratio d/s, GGX α = 0.3
+ *   area-roughness the same against α at d/s = 3
  *
  * attenuation, spot and albedo are tables: one column per curve, each curve a spec evaluated by
  * the library function the figure is about (sc_atten_eval, sc_spot_eval, sc_albedo).
@@ -14,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/check_area.h"
 #include "cli/cli.h"
 #include "cli/sweep_cli.h"
 #include "shadecalc/check.h"
@@ -22,8 +26,18 @@
 /* The albedo preset's Gauss–Legendre order: a quarter of check's default work, and still far
  * below a pixel's worth of error on the plot. */
 enum { MAX_CURVES = 8, ALBEDO_ORDER = 8 };
+/* The area presets' configuration: light at 30° from the normal, the viewer at 30° on the
+ * other side (the mirror direction meets the light's centre); d/s 3 and α 0.3 where fixed. */
+static const double area_theta = 30.0, area_ratio = 3.0, area_alpha = 0.3;
 static const double radians_per_degree = 0.017453292519943295;
-typedef enum { CURVE_ATTEN, CURVE_SPOT, CURVE_ALBEDO, LOBE } preset_kind;
+typedef enum {
+    CURVE_ATTEN,
+    CURVE_SPOT,
+    CURVE_ALBEDO,
+    LOBE,
+    AREA_DISTANCE,
+    AREA_ROUGHNESS
+} preset_kind;
 
 typedef struct {
     const char *column, *spec, *legend;
@@ -39,7 +53,15 @@ typedef struct {
     const char *reference_label; /* a dashed line at y = 1, or NULL */
 } preset;
 
+/* The area presets' curves: a shape at unit size and a method. */
 /* clang-format off */
+#define AREA_CURVES \
+    {"sphere_representative", "sphere center=0,0,0 radius=1 method=representative-point", "sphere representative-point"}, \
+    {"sphere_point", "sphere center=0,0,0 radius=1 method=point", "sphere point"}, \
+    {"tube_representative", "tube p0=0,-2,0 p1=0,2,0 radius=1 method=representative-point", "tube 4:1 representative-point"}, \
+    {"tube_point", "tube p0=0,-2,0 p1=0,2,0 radius=1 method=point", "tube 4:1 point"}, \
+    {"disk_point", "disk center=0,0,0 normal=0,0,-1 radius=1 method=point", "disk point"}, \
+    {"rect_point", "rect center=0,0,0 edge1=2,0,0 edge2=0,1,0 method=point", "rect 2:1 point"}
 static const preset presets[] = {
     {"attenuation", CURVE_ATTEN, {"r=0:12:241"}, {
         {"none", "point pos=0,0,0 atten=none", "none"},
@@ -67,6 +89,12 @@ static const preset presets[] = {
         {"cook_torrance", "cook-torrance diff=0 alpha=0.3 F=none", "ggx alpha=0.3, F=1"}},
      "Directional albedo a(theta_i) (docs/formulas.md §6.9)", "albedo", NAN,
      "a = 1: energy conservation"},
+    {"area-distance", AREA_DISTANCE, {"ratio=1.25:20:76"}, {AREA_CURVES},
+     "Area lights: relative error against d/s, GGX alpha=0.3 (docs/formulas.md §5)",
+     "relative error", NAN, NULL},
+    {"area-roughness", AREA_ROUGHNESS, {"alpha=0.05:1:39"}, {AREA_CURVES},
+     "Area lights: relative error against alpha at d/s=3 (docs/formulas.md §5)",
+     "relative error", NAN, NULL},
 };
 /* clang-format on */
 enum { N_PRESETS = sizeof presets / sizeof presets[0] };
@@ -81,7 +109,10 @@ static const preset *find(const char *name)
 
 int sweep_preset_exists(const char *name) { return find(name) != NULL; }
 
-const char *sweep_preset_names(void) { return "attenuation|spot|lobe|albedo"; }
+const char *sweep_preset_names(void)
+{
+    return "attenuation|spot|lobe|albedo|area-distance|area-roughness";
+}
 
 int sweep_preset_vars(const char *name, sc_sweep_grid *g)
 {
@@ -134,7 +165,14 @@ static int eval_curves(void *user, int worker, const double *vars, double *resul
     (void)errsize;
     const curve_table *t = user;
     for (int c = 0; c < t->n; c++) {
-        if (t->kind == CURVE_ATTEN) {
+        if (t->kind == AREA_DISTANCE || t->kind == AREA_ROUGHNESS) {
+            sc_brdf b = t->brdfs[c];
+            if (t->kind == AREA_ROUGHNESS)
+                b.ax = b.ay = vars[0];
+            results[c] = check_area_error(&t->lights[c], t->lights[c].area.method, &b,
+                                          t->kind == AREA_DISTANCE ? vars[0] : area_ratio,
+                                          area_theta, area_theta);
+        } else if (t->kind == CURVE_ATTEN) {
             results[c] = sc_atten_eval(t->prec, &t->lights[c].atten, vars[0]);
         } else if (t->kind == CURVE_SPOT) {
             results[c] = sc_spot_eval(t->prec, &t->lights[c].spot,
@@ -170,6 +208,10 @@ static int add_curve(curve_table *t, sweep_plan *plan, const char *column, const
     if (bad > 0)
         sc_warning("sweep: %s", err);
     t->brdfs[c] = m.brdf;
+    if (t->kind == AREA_DISTANCE || t->kind == AREA_ROUGHNESS) {
+        sc_brdf_init(&t->brdfs[c], SC_BRDF_COOK_TORRANCE);
+        t->brdfs[c].ax = t->brdfs[c].ay = area_alpha;
+    }
     snprintf(t->columns[c], sizeof t->columns[c], "%s", column);
     plan->columns[c] = t->columns[c];
     plan->legend[c] = legend;

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "shadecalc/area.h"
 #include "shadecalc/pmath.h"
 
 #define Q(x) sc_round(p, (x))
@@ -136,10 +137,17 @@ double sc_spot_eval(sc_prec p, const sc_spot *s, double cos_s)
 
 /* ---- lights (docs/formulas.md §2) ---- */
 
+int sc_light_is_area(sc_light_kind kind)
+{
+    return kind >= SC_LIGHT_SPHERE && kind <= SC_LIGHT_RECT;
+}
+
 void sc_light_init(sc_light *light, sc_light_kind kind)
 {
     *light = (sc_light){.kind = kind};
     light->dir[2] = 1.0;
+    light->area.normal[2] = -1.0;
+    light->area.tol = 1e-9;
     if (kind == SC_LIGHT_SPOT)
         light->dir[2] = -1.0;
     for (int c = 0; c < 3; c++)
@@ -230,6 +238,11 @@ static void light_offset(sc_prec p, const double pos_l[3], const double pos_s[3]
 void sc_light_eval(sc_prec p, const sc_light *light, const double pos[3], const double n[3],
                    sc_light_sample *out)
 {
+    sc_light stand_in;
+    if (sc_light_is_area(light->kind)) {
+        sc_area_stand_in(light, &stand_in);
+        light = &stand_in;
+    }
     *out = (sc_light_sample){.f_d = 1.0, .spot = 1.0};
     double d[3];
     if (light->kind == SC_LIGHT_DIRECTIONAL) {
@@ -338,20 +351,62 @@ int sc_params_in_range(sc_prec p, const sc_param *params, int count, char *msg, 
 
 int sc_light_check_range(sc_prec p, const sc_light *l, char *msg, size_t size)
 {
-    const sc_param params[] = {{"I", l->intensity, 3},       {"amb", l->ambient, 3},
-                               {"diff", l->diffuse, 3},      {"spec", l->specular, 3},
-                               {"dir", l->dir, 3},           {"pos", l->pos, 3},
-                               {"sc", &l->atten.sc, 1},      {"sl", &l->atten.sl, 1},
-                               {"sq", &l->atten.sq, 1},      {"rstart", &l->atten.r_start, 1},
-                               {"rend", &l->atten.r_end, 1}, {"fmax", &l->atten.f_max, 1},
-                               {"fc", &l->atten.f_c, 1},     {"rc", &l->atten.r_c, 1},
-                               {"se", &l->atten.s_e, 1},     {"rmax", &l->atten.r_max, 1},
-                               {"exp", &l->spot.exponent, 1}};
+    const sc_param params[] = {{"I", l->intensity, 3},
+                               {"amb", l->ambient, 3},
+                               {"diff", l->diffuse, 3},
+                               {"spec", l->specular, 3},
+                               {"dir", l->dir, 3},
+                               {"pos", l->pos, 3},
+                               {"sc", &l->atten.sc, 1},
+                               {"sl", &l->atten.sl, 1},
+                               {"sq", &l->atten.sq, 1},
+                               {"rstart", &l->atten.r_start, 1},
+                               {"rend", &l->atten.r_end, 1},
+                               {"fmax", &l->atten.f_max, 1},
+                               {"fc", &l->atten.f_c, 1},
+                               {"rc", &l->atten.r_c, 1},
+                               {"se", &l->atten.s_e, 1},
+                               {"rmax", &l->atten.r_max, 1},
+                               {"exp", &l->spot.exponent, 1},
+                               {"radius", &l->area.radius, 1},
+                               {"p0", l->area.p0, 3},
+                               {"p1", l->area.p1, 3},
+                               {"normal", l->area.normal, 3},
+                               {"edge1", l->area.edge1, 3},
+                               {"edge2", l->area.edge2, 3}};
     return sc_params_in_range(p, params, (int)(sizeof params / sizeof params[0]), msg, size);
+}
+
+/* The emitter's size and orientation, and whether its method applies to its kind. */
+static int validate_area(const sc_light *light, char *msg, size_t size)
+{
+    const sc_area *a = &light->area;
+    if (!(a->radius >= 0.0)) {
+        snprintf(msg, size, "radius=%g: must be >= 0", a->radius);
+        return -1;
+    }
+    if (light->kind == SC_LIGHT_DISK && is_zero3(a->normal))
+        return invalid(msg, size, "normal must not be the zero vector");
+    double e[3] = {a->edge1[1] * a->edge2[2] - a->edge1[2] * a->edge2[1],
+                   a->edge1[2] * a->edge2[0] - a->edge1[0] * a->edge2[2],
+                   a->edge1[0] * a->edge2[1] - a->edge1[1] * a->edge2[0]};
+    if (light->kind == SC_LIGHT_RECT && (is_zero3(e) || !isfinite(e[0] + e[1] + e[2])))
+        return invalid(msg, size, "edge1, edge2: a degenerate rectangle (zero or parallel edges)");
+    if (a->samples != 0 && (a->samples < 2 || a->samples > 512)) {
+        snprintf(msg, size, "samples=%d: must be 2..512 (or 0: until tol)", a->samples);
+        return -1;
+    }
+    if (!(a->tol > 0.0 && a->tol < 1.0)) {
+        snprintf(msg, size, "tol=%g: must be in (0, 1)", a->tol);
+        return -1;
+    }
+    return sc_area_method_applies(light->kind, a->method, NULL, msg, size);
 }
 
 int sc_light_validate(const sc_light *light, char *msg, size_t size)
 {
+    if (sc_light_is_area(light->kind))
+        return validate_area(light, msg, size);
     if (light->kind != SC_LIGHT_POINT && is_zero3(light->dir))
         return invalid(msg, size, "dir must not be the zero vector");
     if (validate_atten(&light->atten, msg, size) < 0)

@@ -13,7 +13,7 @@
 
 enum { MAX_ITEM = 256, MAX_WRITES = 40, SHOWN = 80 };
 
-typedef enum { V_NUMBER, V_COLOUR, V_VECTOR, V_ENUM, V_FLAG } value_kind;
+typedef enum { V_NUMBER, V_COLOUR, V_VECTOR, V_ENUM, V_FLAG, V_INT } value_kind;
 
 /* A key: where its value goes (an offset into sc_light or sc_model), its type, and which kinds
  * accept it (bit k for kind k). */
@@ -98,6 +98,14 @@ static int store(const key_def *k, void *target, const char *value, const char *
         if (ok)
             memcpy(field, d, sizeof(double));
         break;
+    case V_INT: {
+        int i = 0;
+        ok = parse_numbers(value, d, 1) == 0 && d[0] == floor(d[0]) && fabs(d[0]) <= 1e9;
+        if (ok)
+            i = (int)d[0];
+        memcpy(field, &i, sizeof i);
+        break;
+    }
     case V_COLOUR:
     case V_VECTOR:
         ok = (k->kind == V_COLOUR ? sc_parse_colour(value, d) : sc_parse_vector3(value, d)) == 0;
@@ -193,10 +201,11 @@ static const key_def *find_key(const key_def *keys, const char *key)
 static const struct {
     const char *alias, *key;
 } synonyms[] = {
-    {"shininess", "m"},  {"exponent", "m"},   {"exponent", "exp"},  {"roughness", "alpha"},
-    {"intensity", "I"},  {"position", "pos"}, {"direction", "dir"}, {"attenuation", "atten"},
-    {"color", "diff"},   {"colour", "diff"},  {"ambient", "amb"},   {"specular", "spec"},
-    {"diffuse", "diff"}, {"falloff", "exp"},  {"fresnel", "F"},     {"ndf", "D"},
+    {"shininess", "m"},  {"exponent", "m"},    {"exponent", "exp"},    {"roughness", "alpha"},
+    {"intensity", "I"},  {"position", "pos"},  {"direction", "dir"},   {"attenuation", "atten"},
+    {"color", "diff"},   {"colour", "diff"},   {"ambient", "amb"},     {"specular", "spec"},
+    {"diffuse", "diff"}, {"falloff", "exp"},   {"fresnel", "F"},       {"ndf", "D"},
+    {"radiance", "L"},   {"centre", "center"}, {"position", "center"}, {"nodes", "samples"},
 };
 
 /* The key of `keys` (one that `kind` accepts) closest to the unknown `key`, by name or by a
@@ -311,20 +320,32 @@ static int ignored_keys(const write_log *log, const key_need *needs, size_t n_ne
 
 /* ---- lights ---- */
 
-static const char *const light_kinds[] = {"directional", "point", "spot", NULL};
+static const char *const light_kinds[] = {"directional", "point", "spot", "sphere",
+                                          "tube",        "disk",  "rect", NULL};
 static const char *const atten_names[] = {"none",  "inverse-square", "clq", "window",
                                           "pixar", "windowed",       NULL};
 static const char *const spot_names[] = {"opengl", "directx", "smoothstep", NULL};
+static const char *const method_names[] = {"reference", "representative-point", "point", NULL};
 
-#define L(field) offsetof(sc_light, field)
-enum { DIR = 1, PNT = 2, SPT = 4, ANY = 7 };
+/* What a light spec sets: the light, and a rect's size form (normal= with width=, height=,
+ * tangent=), which sc_light_parse turns into its edges. */
+typedef struct {
+    sc_light light;
+    double width, height, tangent[3];
+} light_spec;
+
+#define L(field) offsetof(light_spec, light.field)
+#define S(field) offsetof(light_spec, field)
+enum { DIR = 1, PNT = 2, SPT = 4, SPH = 8, TUB = 16, DSK = 32, RCT = 64 };
+enum { POINTLIKE = DIR | PNT | SPT, AREA = SPH | TUB | DSK | RCT, ANY = POINTLIKE | AREA };
 /* clang-format off */
 static const key_def light_keys[] = {
-    {"I", V_COLOUR, L(intensity), ANY, NULL, "a colour (1 or 3 numbers)"},
-    {"E", V_COLOUR, L(intensity), ANY, NULL, "a colour (1 or 3 numbers)"},
+    {"I", V_COLOUR, L(intensity), POINTLIKE, NULL, "a colour (1 or 3 numbers)"},
+    {"E", V_COLOUR, L(intensity), POINTLIKE, NULL, "a colour (1 or 3 numbers)"},
+    {"L", V_COLOUR, L(intensity), AREA, NULL, "a colour (1 or 3 numbers)"},
     {"amb", V_COLOUR, L(ambient), ANY, NULL, "a colour (1 or 3 numbers)"},
-    {"diff", V_COLOUR, L(diffuse), ANY, NULL, "a colour (1 or 3 numbers)"},
-    {"spec", V_COLOUR, L(specular), ANY, NULL, "a colour (1 or 3 numbers)"},
+    {"diff", V_COLOUR, L(diffuse), POINTLIKE, NULL, "a colour (1 or 3 numbers)"},
+    {"spec", V_COLOUR, L(specular), POINTLIKE, NULL, "a colour (1 or 3 numbers)"},
     {"dir", V_VECTOR, L(dir), DIR | SPT, NULL, "a vector X,Y,Z"},
     {"pos", V_VECTOR, L(pos), PNT | SPT, NULL, "a point X,Y,Z"},
     {"atten", V_ENUM, L(atten.kind), PNT | SPT, atten_names, NULL},
@@ -346,6 +367,20 @@ static const key_def light_keys[] = {
     {"outer", V_NUMBER, L(spot.outer), SPT, NULL, "a half-angle in degrees"},
     {"theta", V_NUMBER, L(spot.inner), SPT, NULL, "a full cone angle in degrees"},
     {"phi", V_NUMBER, L(spot.outer), SPT, NULL, "a full cone angle in degrees"},
+    {"center", V_VECTOR, L(pos), SPH | DSK | RCT, NULL, "a point X,Y,Z"},
+    {"radius", V_NUMBER, L(area.radius), SPH | TUB | DSK, NULL, "a number"},
+    {"p0", V_VECTOR, L(area.p0), TUB, NULL, "a point X,Y,Z"},
+    {"p1", V_VECTOR, L(area.p1), TUB, NULL, "a point X,Y,Z"},
+    {"normal", V_VECTOR, L(area.normal), DSK | RCT, NULL, "a vector X,Y,Z"},
+    {"edge1", V_VECTOR, L(area.edge1), RCT, NULL, "a vector X,Y,Z"},
+    {"edge2", V_VECTOR, L(area.edge2), RCT, NULL, "a vector X,Y,Z"},
+    {"width", V_NUMBER, S(width), RCT, NULL, "a number"},
+    {"height", V_NUMBER, S(height), RCT, NULL, "a number"},
+    {"tangent", V_VECTOR, S(tangent), RCT, NULL, "a vector X,Y,Z"},
+    {"two-sided", V_FLAG, L(area.two_sided), DSK | RCT, NULL, "0 or 1"},
+    {"method", V_ENUM, L(area.method), AREA, method_names, NULL},
+    {"samples", V_INT, L(area.samples), AREA, NULL, "an integer"},
+    {"tol", V_NUMBER, L(area.tol), AREA, NULL, "a number"},
     {NULL, V_NUMBER, 0, 0, NULL, NULL},
 };
 /* clang-format on */
@@ -358,7 +393,8 @@ enum {
     WDW = 1u << SC_ATTEN_WINDOWED,
     GL = 1u << SC_SPOT_OPENGL,
     DX = 1u << SC_SPOT_DIRECTX,
-    SMOOTH = 1u << SC_SPOT_SMOOTHSTEP
+    SMOOTH = 1u << SC_SPOT_SMOOTHSTEP,
+    REF = 1u << SC_AREA_REFERENCE
 };
 static const key_need light_needs[] = {
     {"sc", L(atten.kind), CLQ, "atten", atten_names},
@@ -377,12 +413,13 @@ static const key_need light_needs[] = {
     {"outer", L(spot.kind), DX | SMOOTH, "spot", spot_names},
     {"theta", L(spot.kind), DX | SMOOTH, "spot", spot_names},
     {"phi", L(spot.kind), DX | SMOOTH, "spot", spot_names},
+    {"samples", L(area.method), REF, "method", method_names},
+    {"tol", L(area.method), REF, "method", method_names},
 };
 
 typedef struct {
-    sc_light *light;
+    light_spec spec;
     char what[40];
-    unsigned seen_pos, seen_dir;
     write_log log;
     char *err;
     size_t size;
@@ -393,21 +430,82 @@ static int is_negative(const double c[3]) { return c[0] < 0 || c[1] < 0 || c[2] 
 static int apply_light_item(void *vctx, const item *it)
 {
     light_ctx *c = vctx;
-    unsigned kind = 1u << c->light->kind;
+    unsigned kind = 1u << c->spec.light.kind;
     const key_def *k = find_key(light_keys, it->key);
     if (!k || !(k->kinds & kind))
         return fail_key(c->err, c->size, c->what, light_keys, kind, it->key);
     if (log_write(&c->log, k->offset, k->key, c->what, c->err, c->size) < 0 ||
-        store(k, c->light, it->value, c->what, c->err, c->size) < 0)
+        store(k, &c->spec, it->value, c->what, c->err, c->size) < 0)
         return -1;
-    if (k->kind == V_COLOUR && is_negative((const double *)((char *)c->light + k->offset)))
+    if (k->kind == V_COLOUR && is_negative((const double *)((char *)&c->spec + k->offset)))
         return fail(c->err, c->size, "%s: %s=%s: must not be negative", c->what, k->key, it->value);
-    c->seen_pos |= k->offset == L(pos);
-    c->seen_dir |= k->offset == L(dir);
     if (strcmp(k->key, "theta") == 0) /* Direct3D 9 full cone angles: halved */
-        c->light->spot.inner /= 2.0;
+        c->spec.light.spot.inner /= 2.0;
     if (strcmp(k->key, "phi") == 0)
-        c->light->spot.outer /= 2.0;
+        c->spec.light.spot.outer /= 2.0;
+    return 0;
+}
+
+static int logged(const write_log *log, size_t offset)
+{
+    for (int i = 0; i < log->n; i++)
+        if (log->w[i].offset == offset)
+            return 1;
+    return 0;
+}
+
+/* The keys each kind must have: "missing KEY=..." for the first absent one. */
+static int check_required(const light_ctx *c, char *err, size_t size)
+{
+    static const struct {
+        unsigned kinds;
+        size_t offset;
+        const char *item;
+    } required[] = {
+        {PNT | SPT, L(pos), "pos=X,Y,Z"},
+        {DIR | SPT, L(dir), "dir=X,Y,Z"},
+        {SPH | DSK | RCT, L(pos), "center=X,Y,Z"},
+        {TUB, L(area.p0), "p0=X,Y,Z"},
+        {TUB, L(area.p1), "p1=X,Y,Z"},
+        {SPH | TUB | DSK, L(area.radius), "radius=R"},
+        {DSK, L(area.normal), "normal=X,Y,Z"},
+    };
+    unsigned kind = 1u << c->spec.light.kind;
+    for (size_t i = 0; i < sizeof required / sizeof required[0]; i++)
+        if ((required[i].kinds & kind) && !logged(&c->log, required[i].offset))
+            return fail(err, size, "%s: missing %s", c->what, required[i].item);
+    return 0;
+}
+
+/* A rect from edge1= and edge2=, or from normal=, width=, height= (and tangent=, the direction
+ * of its width; default sc_frame_make's): edge1 = width·t, edge2 = height·(n × t). */
+static int rect_edges(light_ctx *c, char *err, size_t size)
+{
+    const write_log *log = &c->log;
+    int edges = logged(log, L(area.edge1)) || logged(log, L(area.edge2));
+    int sized = logged(log, L(area.normal)) || logged(log, S(width)) || logged(log, S(height)) ||
+                logged(log, S(tangent));
+    if (edges && sized)
+        return fail(err, size, "%s: give edge1=, edge2= or normal=, width=, height=, not both",
+                    c->what);
+    if (edges)
+        return logged(log, L(area.edge1)) && logged(log, L(area.edge2))
+                   ? 0
+                   : fail(err, size, "%s: missing %s", c->what,
+                          logged(log, L(area.edge1)) ? "edge2=X,Y,Z" : "edge1=X,Y,Z");
+    if (!logged(log, L(area.normal)) || !logged(log, S(width)) || !logged(log, S(height)))
+        return fail(err, size, "%s: missing edge1=, edge2= (or normal=, width=, height=)", c->what);
+    const light_spec *s = &c->spec;
+    if (!(s->width > 0.0 && s->height > 0.0))
+        return fail(err, size, "%s: width=%g height=%g: a degenerate rectangle (each must be > 0)",
+                    c->what, s->width, s->height);
+    sc_frame f;
+    if (sc_frame_make(s->light.area.normal, logged(log, S(tangent)) ? s->tangent : NULL, &f) < 0)
+        return fail(err, size, "%s: normal= must not be zero nor parallel to tangent=", c->what);
+    for (int i = 0; i < 3; i++) {
+        c->spec.light.area.edge1[i] = s->width * f.t[i];
+        c->spec.light.area.edge2[i] = s->height * f.b[i];
+    }
     return 0;
 }
 
@@ -419,21 +517,24 @@ int sc_light_parse(const char *spec, sc_light *out, char *err, size_t size)
     int k = has_kind ? word_index(light_kinds, kind) : -1;
     if (k < 0)
         return fail_kind(err, size, "light", light_kinds, has_kind ? kind : "");
-    sc_light_init(out, (sc_light_kind)k);
-    light_ctx c = {.light = out, .err = err, .size = size};
+    light_ctx c = {.err = err, .size = size};
+    sc_light_init(&c.spec.light, (sc_light_kind)k);
     snprintf(c.what, sizeof c.what, "light %s", kind);
-    if (for_each_item(rest, c.what, err, size, apply_light_item, &c) < 0)
-        return -1;
-    if (out->kind != SC_LIGHT_DIRECTIONAL && !c.seen_pos)
-        return fail(err, size, "%s: missing pos=X,Y,Z", c.what);
-    if (out->kind != SC_LIGHT_POINT && !c.seen_dir)
-        return fail(err, size, "%s: missing dir=X,Y,Z", c.what);
     char msg[160];
-    if (sc_light_validate(out, msg, sizeof msg) < 0)
-        return fail(err, size, "%s: %s", c.what, msg);
-    err[0] = '\0';
-    return ignored_keys(&c.log, light_needs, sizeof light_needs / sizeof light_needs[0], out,
-                        c.what, err, size);
+    int status = for_each_item(rest, c.what, err, size, apply_light_item, &c);
+    if (status == 0)
+        status = check_required(&c, err, size);
+    if (status == 0 && k == SC_LIGHT_RECT)
+        status = rect_edges(&c, err, size);
+    if (status == 0 && sc_light_validate(&c.spec.light, msg, sizeof msg) < 0)
+        status = fail(err, size, "%s: %s", c.what, msg);
+    if (status == 0) {
+        err[0] = '\0';
+        status = ignored_keys(&c.log, light_needs, sizeof light_needs / sizeof light_needs[0],
+                              &c.spec, c.what, err, size);
+    }
+    *out = c.spec.light;
+    return status;
 }
 
 /* ---- models ---- */

@@ -35,10 +35,26 @@ void sc_add3(sc_prec p, double acc[3], const double x[3])
         acc[c] = sc_p_add(p, acc[c], x[c]);
 }
 
+/* c_amb ⊙ L_A,k + ∫ f(l, v) L_e cos̄θ_i dω over an area light, by its method (in double). */
+static void area_light(sc_prec p, const sc_scene *s, const sc_light *light,
+                       const sc_shade_point *at, sc_light_terms *t)
+{
+    sc_light_eval(p, light, at->pos, at->frame.n, &t->light);
+    sc_area_eval(light, light->area.method, &s->model.brdf, &at->frame, at->pos, at->v, &t->area);
+    sc_brdf_eval(p, &s->model.brdf, &at->frame, t->area.l, at->v, &t->brdf);
+    sc_mul3(p, s->model.brdf.amb, light->ambient, t->ambient);
+    for (int c = 0; c < 3; c++)
+        t->contribution[c] = sc_p_add(p, t->ambient[c], sc_round(p, t->area.L[c]));
+}
+
 /* c_amb ⊙ L_A,k + f(l, v) ⊙ E_L · cos̄θ_i */
 static void brdf_light(sc_prec p, const sc_scene *s, const sc_light *light,
                        const sc_shade_point *at, sc_light_terms *t)
 {
+    if (sc_light_is_area(light->kind)) {
+        area_light(p, s, light, at, t);
+        return;
+    }
     sc_light_eval(p, light, at->pos, at->frame.n, &t->light);
     sc_brdf_eval(p, &s->model.brdf, &at->frame, t->light.l, at->v, &t->brdf);
     sc_mul3(p, s->model.brdf.amb, light->ambient, t->ambient);

@@ -6,7 +6,7 @@ figures() { # NAME ARGS...: draws NAME.svg with `shadecalc sweep ARGS...`
     name=$1; shift
     expect "figure $name" 0 '' '' -- sweep --plot "$e2e_tmp/$name.svg" "$@"
 }
-for p in attenuation spot lobe albedo; do
+for p in attenuation spot lobe albedo area-distance area-roughness; do
     figures "preset-$p" --preset "$p"
 done
 figures readme-attenuation --var r=0:12:121 --light 'point pos=0,0,$r I=1 atten=window rstart=1 rend=10' --brdf lambert

@@ -17,7 +17,7 @@ expect "check theta separator"  2 '' 'error: check: --theta 0;5: expected number
 brdfs=$(i=0; while [ $i -lt 17 ]; do printf -- '--brdf lambert '; i=$((i + 1)); done)
 # shellcheck disable=SC2086 # 17 options
 expect "check 17 brdfs"         2 '' 'error: check: too many --brdf (at most 16)' -- check $brdfs
-expect "check unknown format"   2 '' "error: check: unknown format 'json' (table, csv)" -- check --brdf lambert -f json
+expect "check unknown format"   2 '' "error: check: unknown format 'xml' (table, csv, json)" -- check --brdf lambert -f xml
 expect "check stray argument"   2 '' "error: check: unexpected argument 'lambert'" -- check --brdf lambert lambert
 expect "check unknown option"   2 '' "~error: check: unknown option '--frob'" -- check --frob
 

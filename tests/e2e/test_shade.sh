@@ -40,7 +40,7 @@ expect "inner > outer"           2 '' 'error: light spot: inner=40 > outer=30: t
 expect "d3d9 full angles"        2 '' 'error: light spot: inner=40 > outer=30: the inner cone must not exceed the outer' -- shade --light 'spot pos=0,4,0 dir=0,-1,0 spot=directx theta=80 phi=60'
 expect "fc > fmax"               2 '' 'error: light point: fc=2 fmax=1: pixar needs 0 < fc <= fmax' -- shade --light 'point pos=0,4,0 atten=pixar fmax=1 fc=2 rc=1 se=1'
 expect "missing pos"             2 '' 'error: light point: missing pos=X,Y,Z' -- shade --light point
-expect "unknown light kind"      2 '' "error: light: unknown kind 'lamp' (directional|point|spot)" -- shade --light 'lamp pos=1,2,3'
+expect "unknown light kind"      2 '' "error: light: unknown kind 'lamp' (directional|point|spot|sphere|tube|disk|rect)" -- shade --light 'lamp pos=1,2,3'
 expect "unknown key"             2 '' "error: light point: unknown key 'foo'" -- shade --light 'point pos=1,2,3 foo=1'
 expect "key of another kind"     2 '' "error: light point: unknown key 'cutoff' (a key of other kinds)" -- shade --light 'point pos=1,2,3 cutoff=10'
 expect "not key=value"           2 '' "error: light point: 'pos': expected key=value" -- shade --light 'point pos'

@@ -175,7 +175,7 @@ expect "unknown variable"   2 '' "error: sweep: --light 'point pos=0,0,\$q': '\$
 expect "no \$ in geometry"  2 '' '~$variables work in --light and --brdf specs only' -- sweep --var r=1 --light 'point pos=0,0,1' --v '0,0,$r'
 expect "expression error"   2 '' "~sweep: 'pow(x)': column" -- sweep --var x=0:1:3 'pow(x)'
 expect "expr and a light"   2 '' '~is evaluated on its own' -- sweep --var x=1 --light 'point pos=0,0,1' x
-expect "unknown preset"     2 '' "error: sweep: unknown preset 'foo' (attenuation|spot|lobe|albedo)" -- sweep --preset foo
+expect "unknown preset"     2 '' "error: sweep: unknown preset 'foo' (attenuation|spot|lobe|albedo|area-distance|area-roughness)" -- sweep --preset foo
 expect "angles, no directional light" 2 '' '~there is none' -- sweep --var theta_i=0:90:3 --light 'point pos=0,0,1'
 expect "both angle kinds"   2 '' '~not both' -- sweep --var theta_i=0 --var theta_h=0 --brdf lambert
 expect "model without brdf" 2 '' '~give a --light to shade with it' -- sweep --var theta_i=0 --brdf opengl

@@ -1,0 +1,73 @@
+# Area lights (docs/formulas.md §5): shade values against closed forms computed here, the spec
+# errors naming their key, check --light's table and formats, the sweep presets.
+. tests/e2e/lib.sh
+
+pi=3.14159265358979323846
+square='rect center=0,0,1 edge1=1,0,0 edge2=0,-1,0'
+# the unit square at height 1: E = 0.752274688454 (n = +z), half of it for n tilted 60°
+expect_close "unit square" 1e-10 "0.752274688454 0.752274688454 0.752274688454" -- \
+    shade --light "$square" --brdf "lambert diff=$pi" --precision double
+expect_close "unit square, n tilted 60" 1e-10 "0.376137344227 0.376137344227 0.376137344227" -- \
+    shade --light "$square" --brdf "lambert diff=$pi" --precision double --n 0.8660254037844386,0,0.5
+expect_close "square by size" 1e-10 "0.752274688454 0.752274688454 0.752274688454" -- \
+    shade --light 'rect center=0,0,1 normal=0,0,-1 width=1 height=1' --brdf "lambert diff=$pi" --precision double
+# sphere R = 0.5 at d = 2, 30° off the normal: E = π sin²σ cos θ = 0.170043690397
+expect_close "sphere above the horizon" 1e-10 "0.170043690397 0.170043690397 0.170043690397" -- \
+    shade --light 'sphere center=1,0,1.7320508075688772 radius=0.5' --brdf "lambert diff=$pi" --precision double
+expect_close "point stand-in of the sphere" 1e-12 "0.170043690397 0.170043690397 0.170043690397" -- \
+    shade --light 'sphere center=1,0,1.7320508075688772 radius=0.5 method=point' --brdf "lambert diff=$pi" --precision double
+# disk R = 0.5 at h = 1 on its axis: E/π = R²/(R² + h²) = 0.2
+expect_close "disk on its axis" 1e-10 "0.2 0.2 0.2" -- \
+    shade --light 'disk center=0,0,1 normal=0,0,-1 radius=0.5' --brdf 'lambert diff=1' --precision double
+expect_close "one-sided disk from behind" 0 "0 0 0" -- \
+    shade --light 'disk center=0,0,1 normal=0,0,1 radius=0.5' --brdf 'lambert diff=1'
+expect_close "inside a tube: c_diff L_e" 1e-12 "0.5 0.5 0.5" -- \
+    shade --light 'tube p0=-1,0,0 p1=1,0,0 radius=0.5 L=2' --brdf 'lambert diff=0.25' --precision double
+printf 'light %s\nbrdf lambert diff=%s\n' "$square" "$pi" >"$e2e_tmp/area.scene"
+expect_close "scene file" 1e-10 "0.752274688454 0.752274688454 0.752274688454" -- \
+    shade --scene "$e2e_tmp/area.scene" --precision double
+# a sphere of radius 1 at distance d: E/π = 1/d²
+verdict "sweep with \$var" sh -c "'$SHADECALC' sweep --var d=2,4 --light 'sphere center=0,0,\$d radius=1' \
+    --brdf 'lambert diff=1' --precision double | awk -F, 'NR > 1 { e = \$2 * \$1 * \$1 - 1; bad += e > 1e-12 || e < -1e-12; n++ }
+    END { exit bad || n != 2 }'"
+expect "explain" 0 '~light 1 (rect, method=reference)' '' -- shade --explain --light "$square" --brdf lambert
+verdict "json error estimate" sh -c "'$SHADECALC' shade -f json --explain --light '$square samples=8' --brdf lambert |
+    python3 -c 'import json, sys; l = json.load(sys.stdin)[\"lights\"][0]; assert l[\"nodes\"] == 8 and 0 < l[\"error\"][0] < 1e-3, l'"
+expect "render" 0 '' '' -- render --light 'sphere center=3,3,3 radius=1 method=representative-point' --brdf cook-torrance --size 16x16 -o "$e2e_tmp/area.exr"
+
+# bad specs: exit 2, the key named
+expect "negative radius" 2 '' 'error: light sphere: radius=-1: must be >= 0' -- shade --light 'sphere center=0,0,2 radius=-1'
+expect "zero normal" 2 '' 'error: light disk: normal must not be the zero vector' -- shade --light 'disk center=0,0,1 normal=0,0,0 radius=1'
+expect "degenerate rect" 2 '' 'error: light rect: edge1, edge2: a degenerate rectangle (zero or parallel edges)' -- shade --light 'rect center=0,0,1 edge1=1,0,0 edge2=2,0,0'
+expect "zero width" 2 '' 'error: light rect: width=0 height=1: a degenerate rectangle (each must be > 0)' -- shade --light 'rect center=0,0,1 normal=0,0,-1 width=0 height=1'
+expect "unknown method" 2 '' "error: light sphere: method=pont: expected reference|representative-point|point (did you mean 'point'?)" -- shade --light 'sphere center=0,0,2 radius=1 method=pont'
+expect "method not for the shape" 2 '' 'error: light rect: method=representative-point: sphere and tube lights only' -- shade --light "$square method=representative-point"
+expect "missing radius" 2 '' 'error: light tube: missing radius=R' -- shade --light 'tube p0=0,0,1 p1=1,0,1'
+expect "two rect forms" 2 '' 'error: light rect: give edge1=, edge2= or normal=, width=, height=, not both' -- shade --light "$square width=1"
+expect "samples range" 2 '' 'error: light sphere: samples=1: must be 2..512 (or 0: until tol)' -- shade --light 'sphere center=0,0,2 radius=1 samples=1'
+expect "samples integer" 2 '' '~samples=2.5: expected an integer' -- shade --light 'sphere center=0,0,2 radius=1 samples=2.5'
+expect "legacy model" 2 '' '~light 1: area lights need a BRDF' -- shade --light "$square" --brdf ads
+expect "tol without reference" 0 '*' 'warning: light sphere: tol= has no effect with method=point' -- shade --light 'sphere center=0,0,2 radius=1 method=point tol=1e-3'
+
+# check --light: one row per method that applies, in three formats
+expect "check table" 0 '~method                 max_rel_error mean_rel_error  ns_per_eval  worst configuration' '' -- \
+    check --light 'disk center=0,0,1 normal=0,0,-1 radius=1' --brdf lambert
+verdict "check rows" sh -c "'$SHADECALC' check --light 'sphere center=0,0,2 radius=1' --brdf lambert | awk '
+    NR == 3 { ok = \$1 == 80 } NR > 4 { m = m \" \" \$1 } END { exit !(ok && m == \" reference representative-point point\") }'"
+# Lambert and a sphere: the representative point is exact where the sphere is above the horizon
+verdict "check csv" sh -c "'$SHADECALC' check --light 'sphere center=0,0,2 radius=1' --brdf lambert -f csv | awk -F, '
+    NR == 1 { ok = \$0 == \"light,brdf,method,configs,max_rel_error,mean_rel_error,ns_per_eval,worst\" }
+    NR > 1 { n++ } END { exit !(ok && n == 3) }'"
+verdict "check json" sh -c "'$SHADECALC' check --light 'tube p0=0,0,2 p1=1,0,2 radius=0.5' --brdf lambert -f json |
+    python3 -c 'import json, sys; d = json.load(sys.stdin); assert d[\"configs\"] == 80 and [m[\"method\"] for m in d[\"methods\"]] == [\"reference\", \"representative-point\", \"point\"], d'"
+expect "check: not an area light" 2 '' 'error: check: --light point pos=0,0,1: an area light (sphere, tube, disk, rect)' -- check --light 'point pos=0,0,1' --brdf lambert
+expect "check: one brdf" 2 '' 'error: check: --light takes one --brdf' -- check --light "$square" --brdf lambert --brdf phong
+expect "check: json needs --light" 2 '' 'error: check: --format json is for --light (area lights); the albedo table is table or csv' -- check --brdf lambert -f json
+
+# the presets: one column per curve, errors that fall with the distance
+expect "preset area-distance" 0 '' '' -- sweep --preset area-distance --var ratio=2,8 -o "$e2e_tmp/ad.csv" --plot "$e2e_tmp/ad.svg"
+verdict "area-distance header" test "$(head -n 1 "$e2e_tmp/ad.csv")" = \
+    'ratio,sphere_representative,sphere_point,tube_representative,tube_point,disk_point,rect_point'
+verdict "point error falls with the distance" awk -F, 'NR == 2 { a = $3 } NR == 3 { b = $3 } END { exit !(b < a / 4) }' "$e2e_tmp/ad.csv"
+verdict "area-distance svg" python3 -c 'import sys, xml.etree.ElementTree as ET; ET.parse(sys.argv[1])' "$e2e_tmp/ad.svg"
+expect "preset area-roughness" 0 '~alpha,sphere_representative' '' -- sweep --preset area-roughness --var alpha=0.2,0.5
