@@ -11,33 +11,31 @@
 #include <math.h>
 #include <string.h>
 
+#include "shadecalc/pmath.h"
+
 static const double pi = 3.14159265358979323846;
 
-/* Room for a polygon clipped by a plane: each vertex and at most one crossing after it. */
-#define CLIP_ROOM (2 * SC_LTC_MAX_VERTS)
+/* Room for a polygon clipped by a plane: each vertex and at most one crossing after it, so
+ * twice as many vertices once clipped, four times as many clipped twice. */
+#define CLIPPED_ONCE (2 * SC_LTC_MAX_VERTS)
+#define CLIPPED_TWICE (4 * SC_LTC_MAX_VERTS)
 
 /* Helpers take vec3 * without const: C11 does not convert double (*)[3] to const double (*)[3]. */
 typedef double vec3[3];
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+static double dot3(const double a[3], const double b[3]) { return sc_p_dot(SC_DOUBLE, a, b, 3); }
 
 static void cross3(const double a[3], const double b[3], double out[3])
 {
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
+    sc_p_cross(SC_DOUBLE, a, b, out);
 }
 
-/* Normalises in place; returns the length before (0: left as it was). */
+/* Normalises in place (sc_p_normalize gives NaN for 0); returns the length before. */
 static double normalize3(double a[3])
 {
-    double len = sqrt(dot3(a, a));
+    double len = sc_p_length(SC_DOUBLE, a, 3);
     if (len > 0.0)
-        for (int c = 0; c < 3; c++)
-            a[c] /= len;
+        sc_p_normalize(SC_DOUBLE, a, 3, a);
     return len;
 }
 
@@ -78,10 +76,11 @@ static double edge_sum(vec3 *poly, int count)
     return sum;
 }
 
-/* ∫ max(cos θ, 0) dω / π over the polygon (view frame), clipped here: in [0, 1]. */
+/* ∫ max(cos θ, 0) dω / π over a polygon of at most CLIPPED_ONCE vertices (view frame), clipped
+ * here: in [0, 1]. */
 static double cosine_form_factor(vec3 *poly, int count)
 {
-    vec3 clipped[CLIP_ROOM];
+    vec3 clipped[CLIPPED_TWICE];
     int m = clip_to_horizon(poly, count, clipped);
     if (m < 3)
         return 0.0;
@@ -90,6 +89,21 @@ static double cosine_form_factor(vec3 *poly, int count)
 }
 
 /* ---- the fitted lobe ---- */
+
+void sc_ltc_brdf(double alpha, const double *f0, sc_brdf *out)
+{
+    sc_brdf_init(out, SC_BRDF_COOK_TORRANCE);
+    out->form = SC_CT_WALTER;
+    out->D = SC_D_GGX;
+    out->G = SC_G_SMITH_CORRELATED;
+    out->F = f0 ? SC_F_SCHLICK : SC_F_NONE;
+    out->ax = out->ay = alpha;
+    for (int k = 0; k < 3; k++) {
+        out->diff[k] = 0.0;
+        out->spec[k] = 1.0;
+        out->f0[k] = f0 ? f0[k] : 0.0;
+    }
+}
 
 /* The table's inverse matrices, magnitudes and Fresnel parts at fractional indices. */
 static void bilinear(double x, double y, double out[SC_LTC_FIELDS])
@@ -107,10 +121,14 @@ static void bilinear(double x, double y, double out[SC_LTC_FIELDS])
     }
 }
 
-void sc_ltc_lookup(double alpha, double cos_v, double minv[4], double *a, double *b)
+/* The table at (α, cos θ_v), both clamped to its range: M⁻¹'s entries (m00, m02, m11, m20),
+ * the magnitude A and the Fresnel part B. */
+static void lookup(double alpha, double cos_v, double minv[4], double *a, double *b)
 {
-    alpha = alpha < SC_LTC_ALPHA_MIN ? SC_LTC_ALPHA_MIN : alpha > 1.0 ? 1.0 : alpha;
-    cos_v = cos_v < 0.0 ? 0.0 : cos_v > 1.0 ? 1.0 : cos_v;
+    alpha = !(alpha >= SC_LTC_ALPHA_MIN) ? SC_LTC_ALPHA_MIN
+            : alpha > 1.0                ? 1.0
+                                         : alpha; /* NaN too */
+    cos_v = !(cos_v >= 0.0) ? 0.0 : cos_v > 1.0 ? 1.0 : cos_v;
     double entry[SC_LTC_FIELDS];
     bilinear(sqrt(alpha) * (SC_LTC_SIZE - 1), sqrt(1.0 - cos_v) * (SC_LTC_SIZE - 1), entry);
     memcpy(minv, entry, 4 * sizeof(double));
@@ -131,14 +149,17 @@ static double mass_above_horizon(const double minv[4])
     return 0.5 * (1.0 + (det > 0.0 ? minv[0] : -minv[0]) / len);
 }
 
-double sc_ltc_lobe_integral(const double minv[4], const double (*poly)[3], int count)
+/* ∫ over the polygon (view frame, clipped to z >= 0, at most CLIPPED_ONCE vertices) of the LTC
+ * with inverse matrix minv (m00, m02, m11, m20), restricted to the upper hemisphere and
+ * renormalised to integrate to 1 there. */
+static double lobe_integral(const double minv[4], vec3 *poly, int count)
 {
-    if (count < 3 || count > CLIP_ROOM)
+    if (count < 3 || count > CLIPPED_ONCE)
         return 0.0;
     double mass = mass_above_horizon(minv);
     if (!(mass > 1e-6))
         return 0.0;
-    vec3 carried[CLIP_ROOM];
+    vec3 carried[CLIPPED_ONCE];
     for (int i = 0; i < count; i++) {
         const double *p = poly[i];
         carried[i][0] = minv[0] * p[0] + minv[1] * p[2];
@@ -217,8 +238,8 @@ static void specular(double alpha, double cos_v, const double f0[3], vec3 *poly,
                      double spec[3])
 {
     double minv[4], a, b;
-    sc_ltc_lookup(alpha, cos_v, minv, &a, &b);
-    double share = sc_ltc_lobe_integral(minv, (const double(*)[3])poly, count);
+    lookup(alpha, cos_v, minv, &a, &b);
+    double share = lobe_integral(minv, poly, count);
     for (int k = 0; k < 3; k++)
         spec[k] = (f0[k] * (a - b) + b) * share;
 }
@@ -233,7 +254,7 @@ int sc_ltc_polygon(const sc_frame *frame, const double v[3], double alpha, const
     for (int i = 0; i < count; i++)
         if (!all_finite(verts[i], 3))
             return -1;
-    vec3 world[SC_LTC_MAX_VERTS], local[SC_LTC_MAX_VERTS], clipped[CLIP_ROOM];
+    vec3 world[SC_LTC_MAX_VERTS], local[SC_LTC_MAX_VERTS], clipped[CLIPPED_ONCE];
     if (scale_vertices(verts, count, world) < 0)
         return -1;
     emitter_view seen = classify(world, count, two_sided);

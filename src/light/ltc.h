@@ -4,8 +4,7 @@
  *
  *   sc_ltc_polygon    a planar polygon, given by its vertices relative to the shading point
  *   sc_ltc_disk       a disk (as a regular polygon of SC_LTC_DISK_SIDES sides of equal area)
- *   sc_ltc_lookup     the fitted table at (α, cos θ_v)
- *   sc_ltc_lobe_integral  the LTC of a table entry integrated over a polygon in the view frame
+ *   sc_ltc_brdf       the BRDF approximated (for references and the fit)
  *
  * Sidedness: a one-sided emitter emits toward the side from which its vertices are seen
  * counter-clockwise (the side its right-hand normal Σ v_i × v_(i+1) points to); a disk toward
@@ -50,13 +49,9 @@ int sc_ltc_disk(const sc_frame *frame, const double v[3], double alpha, const do
                 const double center[3], const double normal[3], double radius, int two_sided,
                 sc_ltc_result *out);
 
-/* The table bilinearly interpolated at (α, cos θ_v), both clamped to its range: M⁻¹'s four
- * entries (m00, m02, m11, m20), the magnitude A and the Fresnel part B. */
-void sc_ltc_lookup(double alpha, double cos_v, double minv[4], double *a, double *b);
-
-/* ∫ over the polygon of the LTC with inverse matrix minv (m00, m02, m11, m20), restricted to
- * the upper hemisphere z >= 0 and renormalised to integrate to 1 over it. The polygon is in
- * the view frame, already clipped to z >= 0. */
-double sc_ltc_lobe_integral(const double minv[4], const double (*poly)[3], int count);
+/* The BRDF that `spec` approximates, as an sc_brdf: Cook–Torrance (Walter), GGX, Smith
+ * height-correlated, c_spec = 1, no diffuse part; Schlick with F0 f0, or F none when f0 is
+ * NULL (F = 1). */
+void sc_ltc_brdf(double alpha, const double *f0, sc_brdf *out);
 
 #endif

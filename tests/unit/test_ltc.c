@@ -163,16 +163,8 @@ static void dir(double theta_deg, double phi_deg, double out[3])
 static integrand ggx(double alpha, const double v[3], double f0)
 {
     integrand g = {.ggx = 1, .frame = frame_about(up)};
-    sc_brdf_init(&g.brdf, SC_BRDF_COOK_TORRANCE);
-    g.brdf.D = SC_D_GGX;
-    g.brdf.G = SC_G_SMITH_CORRELATED;
-    g.brdf.F = SC_F_SCHLICK;
-    g.brdf.ax = g.brdf.ay = alpha;
-    for (int k = 0; k < 3; k++) {
-        g.brdf.diff[k] = 0.0;
-        g.brdf.spec[k] = 1.0;
-        g.brdf.f0[k] = f0;
-    }
+    const double f0s[3] = {f0, f0, f0};
+    sc_ltc_brdf(alpha, f0s, &g.brdf);
     memcpy(g.v, v, sizeof g.v);
     return g;
 }
@@ -291,6 +283,53 @@ static void horizon_clipping_against_quadrature(void **state)
     sc_ltc_result rotated = polygon(up, up, 0.5, 0.04, (const double(*)[3])rw, 4, 1);
     assert_rel(in_world.cosine, rotated.cosine, 1e-12, "the same configuration rotated");
     assert_rel(in_world.cosine, want_tilted, 1e-5, "slanted horizon");
+}
+
+/* ∫ max(cos θ_i, 0) cos θ_e / r² dA over {(x, 1, z): x in [x0, x1], lower(x) <= z <= 1}, lower
+ * linear from z0 to z1 and >= 0: Gauss–Legendre in x, and in z between the limits. */
+static double quad_wall_strip(double x0, double x1, double z0, double z1)
+{
+    double sum = 0.0;
+    for (int i = 0; i < GL_N; i++) {
+        double x = x0 + 0.5 * (gl_x[i] + 1.0) * (x1 - x0);
+        double lo = z0 + 0.5 * (gl_x[i] + 1.0) * (z1 - z0);
+        for (int j = 0; j < GL_N; j++) {
+            double z = lo + 0.5 * (gl_x[j] + 1.0) * (1.0 - lo), r2 = x * x + 1.0 + z * z;
+            double w = 0.25 * gl_w[i] * gl_w[j] * (x1 - x0) * (1.0 - lo);
+            sum += w * z / sqrt(r2) * (1.0 / sqrt(r2)) / r2; /* cos θ_i = z/r, cos θ_e = 1/r */
+        }
+    }
+    return sum;
+}
+
+/* A comb in the wall y = 1: 254 vertices zigzagging across the horizon (z = ±0.5), closed along
+ * z = 1. Non-convex, clipped into 127 teeth: against the quadrature of its part above z = 0,
+ * strip by strip, each strip split where the zigzag crosses z = 0. */
+static void comb_crossing_the_horizon(void **state)
+{
+    (void)state;
+    enum { TEETH = 254 };
+    static double comb[TEETH + 2][3];
+    const double width = 4.0;
+    for (int k = 0; k < TEETH; k++) {
+        comb[k][0] = -width / 2 + width * k / (TEETH - 1);
+        comb[k][1] = 1.0;
+        comb[k][2] = k % 2 ? 0.5 : -0.5;
+    }
+    const double top[2][3] = {{width / 2, 1, 1}, {-width / 2, 1, 1}};
+    memcpy(comb[TEETH], top, sizeof top);
+    double want = 0.0;
+    for (int k = 0; k + 1 < TEETH; k++) {
+        double x0 = comb[k][0], x1 = comb[k + 1][0], z0 = comb[k][2], z1 = comb[k + 1][2];
+        double xc = x0 + (x1 - x0) * z0 / (z0 - z1); /* where the zigzag crosses z = 0 */
+        want += z0 < 0 ? quad_wall_strip(x0, xc, 0, 0) + quad_wall_strip(xc, x1, 0, z1)
+                       : quad_wall_strip(x0, xc, z0, 0) + quad_wall_strip(xc, x1, 0, 0);
+    }
+    double v[3];
+    dir(60, 270, v); /* the mirror direction toward the wall */
+    sc_ltc_result r = polygon(up, v, 0.2, 0.04, (const double(*)[3])comb, TEETH + 2, 1);
+    assert_rel(r.cosine, want, 1e-10, "comb");
+    assert_true(isfinite(r.spec[0]) && r.spec[0] > 0.0);
 }
 
 /* ---- the GGX lobe ---- */
@@ -558,6 +597,7 @@ int main(void)
         cmocka_unit_test(unit_square_form_factor),
         cmocka_unit_test(sidedness_follows_the_winding),
         cmocka_unit_test(horizon_clipping_against_quadrature),
+        cmocka_unit_test(comb_crossing_the_horizon),
         cmocka_unit_test(ggx_square_against_quadrature),
         cmocka_unit_test(ggx_mirror_square_against_quadrature),
         cmocka_unit_test(ggx_worked_example),
