@@ -81,15 +81,7 @@ static lobe lobe_make(double alpha, double cos_v)
     lobe b = {.alpha = alpha, .cos_v = cos_v};
     b.v[0] = sqrt(1.0 - cos_v * cos_v);
     b.v[2] = cos_v;
-    sc_brdf_init(&b.brdf, SC_BRDF_COOK_TORRANCE);
-    b.brdf.D = SC_D_GGX;
-    b.brdf.G = SC_G_SMITH_CORRELATED;
-    b.brdf.F = SC_F_NONE;
-    b.brdf.ax = b.brdf.ay = alpha;
-    for (int k = 0; k < 3; k++) {
-        b.brdf.diff[k] = 0.0;
-        b.brdf.spec[k] = 1.0;
-    }
+    sc_ltc_brdf(alpha, NULL, &b.brdf);
     const double n[3] = {0, 0, 1}, t[3] = {1, 0, 0};
     sc_frame_make(n, t, &b.frame);
     return b;
@@ -149,25 +141,36 @@ typedef struct {
     double dir[3]; /* the lobe's mean direction, normalised */
 } moments;
 
-static moments lobe_moments(const lobe *b)
+/* Calls visit(ctx, b, l, w) for each of the KxK stratified GGX samples where the lobe is not
+ * 0, w = f cos θ_i / (pdf K²): Σ w g(l) estimates ∫ f cos θ_i g dω. */
+typedef void lobe_visitor(void *ctx, const lobe *b, const double l[3], double w);
+
+static void for_each_sample(const lobe *b, lobe_visitor *visit, void *ctx)
 {
-    moments m = {0};
+    double n = (double)MOMENT_K * MOMENT_K;
     for (int i = 0; i < MOMENT_K; i++)
         for (int j = 0; j < MOMENT_K; j++) {
             double l[3];
             ndf_sample(b, i, j, MOMENT_K, l);
             double value = lobe_value(b, l), pdf = ndf_pdf(b, l);
-            if (value == 0.0 || pdf == 0.0)
-                continue;
-            double w = value / pdf;
-            m.a += w;
-            m.b += w * schlick_tail(b, l);
-            for (int c = 0; c < 3; c++)
-                m.dir[c] += w * l[c];
+            if (value != 0.0 && pdf != 0.0)
+                visit(ctx, b, l, value / pdf / n);
         }
-    double n = (double)MOMENT_K * MOMENT_K;
-    m.a /= n;
-    m.b /= n;
+}
+
+static void add_moments(void *ctx, const lobe *b, const double l[3], double w)
+{
+    moments *m = ctx;
+    m->a += w;
+    m->b += w * schlick_tail(b, l);
+    for (int c = 0; c < 3; c++)
+        m->dir[c] += w * l[c];
+}
+
+static moments lobe_moments(const lobe *b)
+{
+    moments m = {0};
+    for_each_sample(b, add_moments, &m);
     m.dir[1] = 0.0; /* the lobe is symmetric about the plane of n and v */
     normalize3(m.dir);
     return m;
@@ -198,7 +201,7 @@ static ltc ltc_make(const double dir[3], const double p[3])
     t.minv = inverse3(&t.m);
     t.det_inv = fabs(det3(&t.minv));
     double row = sqrt(dot3(t.m.m[2], t.m.m[2]));
-    t.mass = 0.5 * (1.0 + t.m.m[2][2] / row); /* the lune, as in sc_ltc_lobe_integral */
+    t.mass = 0.5 * (1.0 + t.m.m[2][2] / row); /* the lune, as in ltc.c: mass_above_horizon */
     return t;
 }
 
@@ -516,29 +519,33 @@ static sc_ltc_result emitter_ltc(const emitter *e, const lobe *b, int sides)
     return r;
 }
 
+typedef struct {
+    const emitter *e;
+    int count;
+    double (*out)[FRESNELS], *whole;
+} reference_sums;
+
+static void add_reference(void *ctx, const lobe *b, const double l[3], double w)
+{
+    reference_sums *r = ctx;
+    double tail = schlick_tail(b, l);
+    for (int f = 0; f < FRESNELS; f++) {
+        double wf = w * (fresnel_f0[f] + (1.0 - fresnel_f0[f]) * tail);
+        r->whole[f] += wf;
+        for (int k = 0; k < r->count; k++)
+            r->out[k][f] += emitter_hit(&r->e[k], l) ? wf : 0.0;
+    }
+}
+
 /* ∫ f F cos dω over each emitter (out[k][f]) and over the hemisphere (whole[f]), F with F0
  * fresnel_f0[f], from stratified GGX samples. */
 static void reference(const lobe *b, const emitter *e, int count, double (*out)[FRESNELS],
                       double whole[FRESNELS])
 {
-    double n = (double)MOMENT_K * MOMENT_K;
     memset(out, 0, count * sizeof *out);
     memset(whole, 0, FRESNELS * sizeof *whole);
-    for (int i = 0; i < MOMENT_K; i++)
-        for (int j = 0; j < MOMENT_K; j++) {
-            double l[3];
-            ndf_sample(b, i, j, MOMENT_K, l);
-            double value = lobe_value(b, l), pdf = ndf_pdf(b, l);
-            if (value == 0.0 || pdf == 0.0)
-                continue;
-            double tail = schlick_tail(b, l);
-            for (int f = 0; f < FRESNELS; f++) {
-                double w = value / pdf * (fresnel_f0[f] + (1.0 - fresnel_f0[f]) * tail) / n;
-                whole[f] += w;
-                for (int k = 0; k < count; k++)
-                    out[k][f] += emitter_hit(&e[k], l) ? w : 0.0;
-            }
-        }
+    reference_sums sums = {e, count, out, whole};
+    for_each_sample(b, add_reference, &sums);
 }
 
 typedef struct {
