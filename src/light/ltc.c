@@ -5,7 +5,7 @@
  * (Lambert 1760; Arvo 1995) ½ |Σ_i θ_i ẑ·(p_i × p_(i+1))/|p_i × p_(i+1)||, θ_i the angle
  * between p_i and p_(i+1), taken with atan2 so that short and near-parallel edges keep their
  * precision. The GGX lobe is the cosine carried by a fitted matrix M: the same polygon, carried
- * by M⁻¹ and clipped again, has the cosine integral of the lobe (Heitz et al. 2016, §3). */
+ * by M⁻¹ and clipped again, has the cosine integral of the lobe (Heitz et al. 2016). */
 #include "light/ltc.h"
 
 #include <math.h>
