@@ -255,7 +255,7 @@ static double cubed_difference(const ltc *t, const double l[3], double lobe_valu
 }
 
 /* The L3 distance between the normalised lobe and the LTC with parameters p (Heitz et al.
- * 2016, §4: importance-sampled from both distributions). */
+ * 2016: importance-sampled from both distributions). */
 static double fit_error(const double p[3], const fit_problem *fp)
 {
     ltc t = ltc_make(fp->mom.dir, p);
