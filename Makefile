@@ -327,3 +327,19 @@ clean:
 	rm -rf build build-* 
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+
+# ---- the LTC table (src/light/ltc_table.c, docs/ltc.md) -------------------------------------
+# Not part of check: the fit takes minutes of one core. `make ltc-table` fits and rewrites the
+# table, then measures the rebuilt library's table against brute force (`make ltc-error`).
+LTC_FIT := $(BUILD)/tools/ltc_fit
+$(LTC_FIT): $(BUILD)/obj/tools/ltc_fit.o $(STATIC)
+	@mkdir -p $(dir $@)
+	$(CC) $(LDALL) -o $@ $< $(STATIC) $(LDLIBS)
+
+.PHONY: ltc-table ltc-error
+ltc-table: $(LTC_FIT)
+	$(LTC_FIT) table src/light/ltc_table.c
+	@$(MAKE) --no-print-directory ltc-error
+
+ltc-error: $(LTC_FIT)
+	$(LTC_FIT) error
