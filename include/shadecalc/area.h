@@ -7,6 +7,8 @@
  *                                                  coordinates, any BRDF, with an error estimate
  *                            representative-point  Karis 2013 (sphere, tube)
  *                            point                 a point light at the centre, I = L_e · extent
+ *                            ltc                   linearly transformed cosines (disk, rect;
+ *                                                  lambert and GGX cook-torrance)
  *   sc_area_method_applies   whether a method evaluates a light kind with a BRDF, as a message
  *   sc_area_extent           the stand-in's I / L_e: πR² (sphere, disk), 2Rℓ + πR² (tube),
  *                            ‖edge1 × edge2‖ (rect)

@@ -72,7 +72,8 @@ typedef enum {
 typedef enum {
     SC_AREA_REFERENCE,      /* the converging quadrature over the emitter, any BRDF */
     SC_AREA_REPRESENTATIVE, /* Karis 2013's representative point: sphere, tube */
-    SC_AREA_POINT           /* a point light at the centre with I = L_e · area */
+    SC_AREA_POINT,          /* a point light at the centre with I = L_e · area */
+    SC_AREA_LTC             /* linearly transformed cosines (Heitz et al. 2016): disk, rect */
 } sc_area_method;
 
 /* The emitter of an area light: a uniform, Lambertian emitter of radiance L_e

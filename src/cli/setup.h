@@ -37,7 +37,8 @@ int setup_point(const shade_setup *s, sc_shade_point *out);
 
 /* USAGE (after the error) if a number of the setup is beyond the range of precision p
  * ("light 1: I=1e+39: beyond the highp range ..."): it would round to inf; or if an area light
- * meets a model its method does not take (a legacy model). */
+ * meets a model its method does not take (a legacy model; method=ltc with a BRDF other than
+ * lambert or GGX cook-torrance). */
 int setup_check_range(const shade_setup *s, sc_prec p);
 
 #endif

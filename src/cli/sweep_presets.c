@@ -6,7 +6,9 @@
  *                 BRDF Explorer's polar view
  *   albedo        the directional albedo a(θ_i) of several models (as `shadecalc check`), every
  *                 degree up to 89°, with the line a = 1 of energy conservation
- *   area-distance the relative error of each area light method (as `shadecalc check --light`)
+ *   area-distance the relative error of each area light method (as `shadecalc check --light`;
+ *                 point and representative-point for sphere and tube, point and ltc for disk
+ *                 and rect)
  *                 against the distance/size ratio d/s, GGX α = 0.3
  *   area-roughness the same against α at d/s = 3
  *
@@ -61,7 +63,9 @@ typedef struct {
     {"tube_representative", "tube p0=0,-2,0 p1=0,2,0 radius=1 method=representative-point", "tube 4:1 representative-point"}, \
     {"tube_point", "tube p0=0,-2,0 p1=0,2,0 radius=1 method=point", "tube 4:1 point"}, \
     {"disk_point", "disk center=0,0,0 normal=0,0,-1 radius=1 method=point", "disk point"}, \
-    {"rect_point", "rect center=0,0,0 edge1=2,0,0 edge2=0,1,0 method=point", "rect 2:1 point"}
+    {"disk_ltc", "disk center=0,0,0 normal=0,0,-1 radius=1 method=ltc", "disk ltc"}, \
+    {"rect_point", "rect center=0,0,0 edge1=2,0,0 edge2=0,1,0 method=point", "rect 2:1 point"}, \
+    {"rect_ltc", "rect center=0,0,0 edge1=2,0,0 edge2=0,1,0 method=ltc", "rect 2:1 ltc"}
 static const preset presets[] = {
     {"attenuation", CURVE_ATTEN, {"r=0:12:241"}, {
         {"none", "point pos=0,0,0 atten=none", "none"},

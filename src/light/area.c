@@ -89,7 +89,8 @@ void sc_area_stand_in(const sc_light *light, sc_light *point)
     }
 }
 
-static const char *const method_names[] = {"reference", "representative-point", "point", NULL};
+static const char *const method_names[] = {"reference", "representative-point", "point", "ltc",
+                                           NULL};
 
 const char *sc_area_method_name(sc_area_method method)
 {
@@ -97,12 +98,33 @@ const char *sc_area_method_name(sc_area_method method)
                                                                            : NULL;
 }
 
+/* The BRDFs the LTC fit is made for: Lambert, and isotropic GGX Cook–Torrance with Smith
+ * height-correlated masking and Schlick's Fresnel (or none: F0 = 1). */
+static int ltc_takes(const sc_brdf *b)
+{
+    if (b->kind == SC_BRDF_LAMBERT)
+        return 1;
+    return b->kind == SC_BRDF_COOK_TORRANCE && b->form == SC_CT_WALTER && b->D == SC_D_GGX &&
+           b->G == SC_G_SMITH_CORRELATED && b->F != SC_F_EXACT && b->ax == b->ay;
+}
+
 int sc_area_method_applies(sc_light_kind kind, sc_area_method method, const sc_brdf *b, char *msg,
                            size_t size)
 {
-    (void)b; /* every method takes every BRDF (representative-point: see docs/formulas.md §5.3) */
+    /* the other methods take every BRDF (representative-point: docs/formulas.md §5.3) */
     if (method == SC_AREA_REPRESENTATIVE && kind != SC_LIGHT_SPHERE && kind != SC_LIGHT_TUBE) {
         snprintf(msg, size, "method=representative-point: sphere and tube lights only");
+        return -1;
+    }
+    if (method == SC_AREA_LTC && kind != SC_LIGHT_DISK && kind != SC_LIGHT_RECT) {
+        snprintf(msg, size, "method=ltc: disk and rect lights only");
+        return -1;
+    }
+    if (method == SC_AREA_LTC && b && !ltc_takes(b)) {
+        snprintf(msg, size,
+                 "method=ltc: not for brdf %s as given (ltc takes lambert, or cook-torrance with "
+                 "D=ggx G=smith-correlated F=schlick|none and ax = ay)",
+                 sc_brdf_kind_name(b->kind));
         return -1;
     }
     return 0;
@@ -281,6 +303,7 @@ int sc_area_eval(const sc_light *light, sc_area_method method, const sc_brdf *b,
     switch (method) {
     case SC_AREA_REFERENCE: area_reference(light, &g, pos, out); break;
     case SC_AREA_REPRESENTATIVE: representative_method(light, &g, pos, out); break;
+    case SC_AREA_LTC: area_ltc(light, &g, pos, out); break;
     default: point_method(light, &g, pos, out); break;
     }
     return 0;

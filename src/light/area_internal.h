@@ -23,6 +23,9 @@ void area_add(area_integrand *g, const double l[3], double weight, double acc[3]
 void area_reference(const sc_light *light, area_integrand *g, const double pos[3],
                     sc_area_result *out);
 
+/* method=ltc (area_ltc.c): fills L. */
+void area_ltc(const sc_light *light, area_integrand *g, const double pos[3], sc_area_result *out);
+
 /* The centre of the emitter (a tube's: the midpoint of p0–p1). */
 void area_centre(const sc_light *light, double out[3]);
 

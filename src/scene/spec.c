@@ -325,7 +325,8 @@ static const char *const light_kinds[] = {"directional", "point", "spot", "spher
 static const char *const atten_names[] = {"none",  "inverse-square", "clq", "window",
                                           "pixar", "windowed",       NULL};
 static const char *const spot_names[] = {"opengl", "directx", "smoothstep", NULL};
-static const char *const method_names[] = {"reference", "representative-point", "point", NULL};
+static const char *const method_names[] = {"reference", "representative-point", "point", "ltc",
+                                           NULL};
 
 /* What a light spec sets: the light, and a rect's size form (normal= with width=, height=,
  * tangent=), which sc_light_parse turns into its edges. */

@@ -12,6 +12,8 @@ expect_close "unit square, n tilted 60" 1e-10 "0.376137344227 0.376137344227 0.3
 expect_close "square by size" 1e-10 "0.752274688454 0.752274688454 0.752274688454" -- \
     shade --light 'rect center=0,0,1 normal=0,0,-1 width=1 height=1' --brdf "lambert diff=$pi" --precision double
 # sphere R = 0.5 at d = 2, 30° off the normal: E = π sin²σ cos θ = 0.170043690397
+expect_close "ltc exact for lambert" 1e-10 "0.376137344227 0.376137344227 0.376137344227" -- \
+    shade --light "$square method=ltc" --brdf "lambert diff=$pi" --precision double --n 0.8660254037844386,0,0.5
 expect_close "sphere above the horizon" 1e-10 "0.170043690397 0.170043690397 0.170043690397" -- \
     shade --light 'sphere center=1,0,1.7320508075688772 radius=0.5' --brdf "lambert diff=$pi" --precision double
 expect_close "point stand-in of the sphere" 1e-12 "0.170043690397 0.170043690397 0.170043690397" -- \
@@ -40,18 +42,24 @@ expect "negative radius" 2 '' 'error: light sphere: radius=-1: must be >= 0' -- 
 expect "zero normal" 2 '' 'error: light disk: normal must not be the zero vector' -- shade --light 'disk center=0,0,1 normal=0,0,0 radius=1'
 expect "degenerate rect" 2 '' 'error: light rect: edge1, edge2: a degenerate rectangle (zero or parallel edges)' -- shade --light 'rect center=0,0,1 edge1=1,0,0 edge2=2,0,0'
 expect "zero width" 2 '' 'error: light rect: width=0 height=1: a degenerate rectangle (each must be > 0)' -- shade --light 'rect center=0,0,1 normal=0,0,-1 width=0 height=1'
-expect "unknown method" 2 '' "error: light sphere: method=pont: expected reference|representative-point|point (did you mean 'point'?)" -- shade --light 'sphere center=0,0,2 radius=1 method=pont'
+expect "unknown method" 2 '' "error: light sphere: method=pont: expected reference|representative-point|point|ltc (did you mean 'point'?)" -- shade --light 'sphere center=0,0,2 radius=1 method=pont'
 expect "method not for the shape" 2 '' 'error: light rect: method=representative-point: sphere and tube lights only' -- shade --light "$square method=representative-point"
 expect "missing radius" 2 '' 'error: light tube: missing radius=R' -- shade --light 'tube p0=0,0,1 p1=1,0,1'
 expect "two rect forms" 2 '' 'error: light rect: give edge1=, edge2= or normal=, width=, height=, not both' -- shade --light "$square width=1"
 expect "samples range" 2 '' 'error: light sphere: samples=1: must be 2..512 (or 0: until tol)' -- shade --light 'sphere center=0,0,2 radius=1 samples=1'
 expect "samples integer" 2 '' '~samples=2.5: expected an integer' -- shade --light 'sphere center=0,0,2 radius=1 samples=2.5'
+expect "ltc and phong" 2 '' 'error: light 1: method=ltc: not for brdf phong as given (ltc takes lambert, or cook-torrance with D=ggx G=smith-correlated F=schlick|none and ax = ay)' -- shade --light "$square method=ltc" --brdf phong
+expect "ltc and a sphere" 2 '' 'error: light sphere: method=ltc: disk and rect lights only' -- shade --light 'sphere center=0,0,2 radius=1 method=ltc'
 expect "legacy model" 2 '' '~light 1: area lights need a BRDF' -- shade --light "$square" --brdf ads
 expect "tol without reference" 0 '*' 'warning: light sphere: tol= has no effect with method=point' -- shade --light 'sphere center=0,0,2 radius=1 method=point tol=1e-3'
 
 # check --light: one row per method that applies, in three formats
 expect "check table" 0 '~method                 max_rel_error mean_rel_error  ns_per_eval  worst configuration' '' -- \
     check --light 'disk center=0,0,1 normal=0,0,-1 radius=1' --brdf lambert
+# ltc is exact for Lambert: 1e-5 leaves room for the rounding of the closed form on slivers
+# (3e-8 of a rect left above the horizon)
+verdict "check rows of a rect" sh -c "'$SHADECALC' check --light '$square' --brdf lambert | awk '
+    NR > 4 { m = m \" \" \$1 } \$1 == \"ltc\" { exact = \$2 < 1e-5 } END { exit !(exact && m == \" reference point ltc\") }'"
 verdict "check rows" sh -c "'$SHADECALC' check --light 'sphere center=0,0,2 radius=1' --brdf lambert | awk '
     NR == 3 { ok = \$1 == 80 } NR > 4 { m = m \" \" \$1 } END { exit !(ok && m == \" reference representative-point point\") }'"
 # Lambert and a sphere: the representative point is exact where the sphere is above the horizon
@@ -67,7 +75,7 @@ expect "check: json needs --light" 2 '' 'error: check: --format json is for --li
 # the presets: one column per curve, errors that fall with the distance
 expect "preset area-distance" 0 '' '' -- sweep --preset area-distance --var ratio=2,8 -o "$e2e_tmp/ad.csv" --plot "$e2e_tmp/ad.svg"
 verdict "area-distance header" test "$(head -n 1 "$e2e_tmp/ad.csv")" = \
-    'ratio,sphere_representative,sphere_point,tube_representative,tube_point,disk_point,rect_point'
+    'ratio,sphere_representative,sphere_point,tube_representative,tube_point,disk_point,disk_ltc,rect_point,rect_ltc'
 verdict "point error falls with the distance" awk -F, 'NR == 2 { a = $3 } NR == 3 { b = $3 } END { exit !(b < a / 4) }' "$e2e_tmp/ad.csv"
 verdict "area-distance svg" python3 -c 'import sys, xml.etree.ElementTree as ET; ET.parse(sys.argv[1])' "$e2e_tmp/ad.svg"
 expect "preset area-roughness" 0 '~alpha,sphere_representative' '' -- sweep --preset area-roughness --var alpha=0.2,0.5
