@@ -29,8 +29,9 @@
  *
  * Stated bound: <= 1 ULP against the double reference for every finite binary32 x (GLSL ES
  * asks nothing; the accuracy test checks |x| <= 1e4). make exhaustive, every binary32 input
- * against this bound and MPFR: sin correctly rounded with its table of two hard cases
- * (sin_hard_cases, consulted only when the core lands within its bound of a midpoint).
+ * against this bound and MPFR: sin and cos correctly rounded with their tables of two and four
+ * hard cases (sin_hard_cases, cos_hard_cases, consulted only when the core lands within its
+ * bound of a midpoint).
  */
 #include <stdint.h>
 #include <string.h>
@@ -143,6 +144,12 @@ static double sin_quadrant(double r, int quadrant)
     return quadrant & 2 ? -v : v;
 }
 
+/* The relative form of the bound 2^-47 |core| + 2^-99 (core = 0 only where it is exact). */
+static double sincos_eps(double core)
+{
+    return core != 0.0 ? 0x1p-47 + 0x1p-99 / (core < 0 ? -core : core) : 0.0;
+}
+
 /* The hard cases of sin: make exhaustive found these two over all 2^32 inputs (the core rounds
  * them the wrong way); values from MPFR at 300 bits: the midpoint's double one ULP toward the
  * exact value. */
@@ -155,15 +162,22 @@ double sc_k_sin_core(float x)
 {
     reduced q = reduce(x);
     double r = sin_quadrant(q.r, q.quadrant);
-    /* the bound 2^-47 |core| + 2^-99 as a relative one (r = 0 only for x = 0, exact) */
-    double eps = r != 0.0 ? 0x1p-47 + 0x1p-99 / (r < 0 ? -r : r) : 0.0;
-    return sc_k_near_midpoint(r, eps) ? sc_k_lookup_hard(sin_hard_cases, 2, x, r) : r;
+    return sc_k_near_midpoint(r, sincos_eps(r)) ? sc_k_lookup_hard(sin_hard_cases, 2, x, r) : r;
 }
+
+/* The hard cases of cos (even: both signs of x), found and valued as sin's. */
+static const sc_k_hard_case cos_hard_cases[] = {
+    {0x5f18b878, 0x1.fe2976fffffffp-1}, /* cos(1.10046776e19) = 0.99641010165214536707 */
+    {0xdf18b878, 0x1.fe2976fffffffp-1},
+    {0x6115cb11, 0x1.f0285d0000001p-1}, /* cos(1.72699834e20) = 0.96905794739723207014 */
+    {0xe115cb11, 0x1.f0285d0000001p-1},
+};
 
 double sc_k_cos_core(float x)
 {
     reduced q = reduce(x);
-    return sin_quadrant(q.r, (q.quadrant + 1) & 3);
+    double r = sin_quadrant(q.r, (q.quadrant + 1) & 3);
+    return sc_k_near_midpoint(r, sincos_eps(r)) ? sc_k_lookup_hard(cos_hard_cases, 4, x, r) : r;
 }
 
 /* tan(x) = tan r in even quadrants, −cot r in odd ones. */

@@ -192,7 +192,7 @@ static void pow_rounds_exact_midpoints(void **state)
     assert_true(sc_powf(-4097.0f, 3.0f) == (float)(-4097.0 * 4097.0 * 4097.0));
 }
 
-/* The inputs of exp, exp2, log, sin and atan that make exhaustive found rounded the wrong way (their tables
+/* The inputs of exp, exp2, log, sin, cos and atan that make exhaustive found rounded the wrong way (their tables
  * of hard cases): MPFR's correctly rounded binary32 is the reference. */
 static void check_hard_case(const char *name, uint32_t bits, double bound)
 {
@@ -216,6 +216,10 @@ static void hard_cases_round_correctly(void **state)
     check_hard_case("log", 0x6f31a8ec, 0x1p-48);
     check_hard_case("sin", 0x46199998, 0x1p-47 + 0x1p-99 / 0.34); /* x = 9830.39844 */
     check_hard_case("sin", 0xc6199998, 0x1p-47 + 0x1p-99 / 0.34);
+    check_hard_case("cos", 0x5f18b878, 0x1p-47 + 0x1p-99); /* x = 1.10046776e19 */
+    check_hard_case("cos", 0xdf18b878, 0x1p-47 + 0x1p-99);
+    check_hard_case("cos", 0x6115cb11, 0x1p-47 + 0x1p-99); /* x = 1.72699834e20 */
+    check_hard_case("cos", 0xe115cb11, 0x1p-47 + 0x1p-99);
     check_hard_case("atan", 0x3d8d6b23, 0x1p-47);
     check_hard_case("atan", 0xbd8d6b23, 0x1p-47);
 }
