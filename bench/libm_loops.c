@@ -160,8 +160,8 @@ static void user_scene_of(const sc_scene *s, user_scene *u)
     u->f0 = (float)b->f0[0];
 }
 
-static float specular(const user_scene *s, const float *n, const float *v, const float *l,
-                      float nl, float nv)
+static float specular(const user_scene *s, const float *n, const float *v, const float *l, float nl,
+                      float nv)
 {
     float h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
     unit(h);
@@ -246,9 +246,9 @@ typedef struct {
 
 static user_atten user_atten_of(const sc_atten *a)
 {
-    return (user_atten){(float)a->sc,  (float)a->sl,  (float)a->sq,    (float)a->r_start,
+    return (user_atten){(float)a->sc,    (float)a->sl,    (float)a->sq,  (float)a->r_start,
                         (float)a->r_end, (float)a->f_max, (float)a->f_c, (float)a->r_c,
-                        (float)a->s_e, (float)a->r_max};
+                        (float)a->s_e,   (float)a->r_max};
 }
 
 typedef struct {

@@ -90,7 +90,8 @@ void sc_batch_ref_brdf(const sc_batch_args *a, size_t i, double *out)
     double peak = lobe_peak(b, t.cos_i);
     for (int c = 0; c < 3; c++) {
         out[c] = t.f[c];
-        out[3] = fmax(out[3], b->diff[c] / pi + fabs(t.diffuse[c]) + t.specular[c] + b->spec[c] * peak);
+        out[3] = fmax(out[3],
+                      b->diff[c] / pi + fabs(t.diffuse[c]) + t.specular[c] + b->spec[c] * peak);
     }
 }
 
@@ -150,16 +151,16 @@ void sc_batch_gen_brdf(uint64_t *rng, float *in)
 /* ---- the rows' parameters ---- */
 
 const sc_atten sc_batch_test_atten = {.kind = SC_ATTEN_CLQ,
-                                     .sc = 1.0,
-                                     .sl = 0.5,
-                                     .sq = 0.25,
-                                     .r_start = 1.0,
-                                     .r_end = 10.0,
-                                     .f_max = 4.0,
-                                     .f_c = 1.0,
-                                     .r_c = 2.0,
-                                     .s_e = 2.0,
-                                     .r_max = 10.0};
+                                      .sc = 1.0,
+                                      .sl = 0.5,
+                                      .sq = 0.25,
+                                      .r_start = 1.0,
+                                      .r_end = 10.0,
+                                      .f_max = 4.0,
+                                      .f_c = 1.0,
+                                      .r_c = 2.0,
+                                      .s_e = 2.0,
+                                      .r_max = 10.0};
 
 const sc_spot sc_batch_test_spot = {
     .kind = SC_SPOT_OPENGL, .exponent = 8.0, .cutoff = 45.0, .inner = 20.0, .outer = 40.0};

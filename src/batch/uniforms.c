@@ -112,7 +112,7 @@ void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u)
     double ax = b->ax > 1e-4 ? b->ax : 1e-4, ay = b->ay > 1e-4 ? b->ay : 1e-4;
     memset(u, 0, sizeof *u);
     u->model = b->kind >= SC_BRDF_LAMBERT && b->kind <= SC_BRDF_COOK_TORRANCE ? b->kind
-                                                                               : SC_BRDF_LAMBERT;
+                                                                              : SC_BRDF_LAMBERT;
     u->form = b->form;
     u->D = b->D;
     u->G = b->G;
@@ -167,10 +167,10 @@ static int brdf_uniforms_of(const sc_brdf *b, sc_shade_uniforms *u, char *why, s
     if (!(b->kind >= SC_BRDF_LAMBERT && b->kind <= SC_BRDF_COOK_TORRANCE))
         return refuse(why, size, "brdf kind %d is not covered by the batch kernels", (int)b->kind);
     sc_uniforms_brdf(b, &u->brdf);
-    u->lobe = b->kind == SC_BRDF_LAMBERT                                  ? SC_LOBE_NONE
-              : b->kind == SC_BRDF_BLINN_PHONG                            ? SC_LOBE_BLINN
+    u->lobe = b->kind == SC_BRDF_LAMBERT                       ? SC_LOBE_NONE
+              : b->kind == SC_BRDF_BLINN_PHONG                 ? SC_LOBE_BLINN
               : b->kind == SC_BRDF_COOK_TORRANCE && own_ggx(b) ? SC_LOBE_GGX
-                                                                          : SC_LOBE_MODEL;
+                                                               : SC_LOBE_MODEL;
     for (int c = 0; c < 3; c++) {
         u->diff_pi[c] = (float)(b->diff[c] / pi);
         u->spec[c] = (float)b->spec[c];
@@ -192,8 +192,7 @@ static void unit_float(const double v[3], float out[3])
 
 /* Directional, point and spot lights, with any falloff and no range (a direct3d9 setting).
  * Another kind (a new enumerator of sc_light_kind) is refused by its number. */
-static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, char *why,
-                             size_t size)
+static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, char *why, size_t size)
 {
     memset(u, 0, sizeof *u);
     switch (l->kind) {

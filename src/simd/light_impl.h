@@ -187,7 +187,10 @@ static SC_INLINE v3 tangent_of(int nt, v3 n)
 }
 
 /* (1 − c)(1 + c) = sin²θ, accurate near c = 1 */
-static SC_INLINE vf sin2_of(vf c) { return vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)); }
+static SC_INLINE vf sin2_of(vf c)
+{
+    return vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c));
+}
 
 /* sl and p_w of brdf_geometry. With (w·t)² + (w·b)² = sin²θ_w for unit w, and (h_u·t)² +
  * (h_u·b)² = |n × h_u|², each is written as the isotropic form of one α plus a positive
@@ -382,9 +385,10 @@ static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c, vf p
     if (u->aniso)
         as = tier_sqrt(tier, vf_max(p, vf_set1(FLT_MIN)));
     else
-        as = vf_mul(vf_set1(u->k[0]), /* k0 = α */
-                    tier_sqrt(tier, vf_max(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)),
-                                           vf_set1(FLT_MIN))));
+        as = vf_mul(
+            vf_set1(u->k[0]), /* k0 = α */
+            tier_sqrt(tier, vf_max(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)),
+                                   vf_set1(FLT_MIN))));
     vf a = vf_mul(c, tier_rcp(tier, as));
     vf t = tier_rcp(tier, vf_fma(vf_set1(0.5f), a, vf_set1(1.0f)));
     vf erfc_scaled = vf_mul(t, light_exp(tier, poly(t, erfc_c, 10)));

@@ -109,7 +109,8 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const sc_shade_uniforms *
     v3 f = v3_set1(s->diff_pi);
     if (lobe == SC_LOBE_MODEL) {
         brdf_geometry g = brdf_geometry_make(nt, &s->brdf, n, l, v);
-        f = v3_select(lit, brdf_colour(&s->brdf, any_model(tier, &s->brdf, &g)), (v3){zero, zero, zero});
+        f = v3_select(lit, brdf_colour(&s->brdf, any_model(tier, &s->brdf, &g)),
+                      (v3){zero, zero, zero});
     } else if (lobe != SC_LOBE_NONE) {
         vf sp = vf_select(lit, own_specular(tier, nt, lobe, s, n, v, l, nl, nv), zero);
         v3 ks = v3_set1(s->spec);
@@ -133,8 +134,7 @@ static SC_INLINE void shade_tier(int tier, sc_lobe lobe, const float *const *in,
 }
 
 #define SHADE_LANE(name, tier, lobe)                                                               \
-    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,                \
-                               const void *u)                                                      \
+    static SC_INLINE void name(const float *const *in, float *const *out, size_t i, const void *u) \
     {                                                                                              \
         shade_tier(tier, lobe, in, out, i, u);                                                     \
     }

@@ -19,8 +19,7 @@ enum { MAX_IN = 9, MAX_OUT = 3 };
 
 /* A lane function loads its inputs in[j] + i and stores its outputs out[j] + i itself, with
  * constant j: straight-line code, no copies. params is args.params (the light kernels). */
-typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i,
-                          const void *params);
+typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i, const void *params);
 
 static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 {
@@ -196,8 +195,7 @@ static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
 
 static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
 
-static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i,
-                               const void *p)
+static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i, const void *p)
 {
     (void)p;
     vf_storeu(out[0] + i, v3_dot(v3_load(in, 0, i), v3_load(in, 3, i)));
@@ -223,8 +221,7 @@ static SC_INLINE void length_lane(const float *const *in, float *const *out, siz
 }
 
 #define TIERED_LANE(name, body_fn, tier)                                                           \
-    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,                \
-                               const void *p)                                                      \
+    static SC_INLINE void name(const float *const *in, float *const *out, size_t i, const void *p) \
     {                                                                                              \
         (void)p;                                                                                   \
         body_fn(tier, in, out, i);                                                                 \
@@ -242,6 +239,5 @@ BATCH_N(reflect_bits22, 6, 3, reflect_lane)
 BATCH_N(normalize_u3, 3, 3, normalize_refined)
 BATCH_N(normalize_bits11, 3, 3, normalize_f8)
 BATCH_N(length_u2, 3, 1, length_lane)
-
 
 static const float inv_pi_f = 0.318309886183790671538f;

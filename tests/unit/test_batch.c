@@ -117,7 +117,9 @@ static void free_scenes(void)
 /* The parameters e runs with in the compare-with-scalar test: k < params_count(e). */
 static int params_count(const sc_batch_entry *e)
 {
-    return strcmp(e->kernel, "shade") == 0 ? N_SCENES : strcmp(e->kernel, "brdf") == 0 ? N_BRDFS : 1;
+    return strcmp(e->kernel, "shade") == 0  ? N_SCENES
+           : strcmp(e->kernel, "brdf") == 0 ? N_BRDFS
+                                            : 1;
 }
 
 static const void *params_of(const sc_batch_entry *e, int k)

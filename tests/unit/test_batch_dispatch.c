@@ -97,12 +97,12 @@ static void any_float_alignment_gives_the_same_bits(void **state)
         sc_scene scene;
         char why[256];
         sc_batch_example_scene(SC_BRDF_COOK_TORRANCE, 1, 1, 1, lights, &scene);
-        sc_batch_plan *plan = sc_batch_plan_compile(&scene, "accurate", SC_ISA_SCALAR, why, sizeof why);
+        sc_batch_plan *plan = sc_batch_plan_compile(&scene, "accurate", SC_ISA_SCALAR, why,
+                                                    sizeof why);
         assert_non_null(plan);
         for (int shift = 0; shift < MAX_SHIFT; shift++) {
-            sc_batch_args a = {.n = N,
-                               .params = strcmp(e->kernel, "shade") == 0 ? (const void *)plan
-                                                                         : e->params};
+            sc_batch_args a = {
+                .n = N, .params = strcmp(e->kernel, "shade") == 0 ? (const void *)plan : e->params};
             for (int j = 0; j < e->n_in; j++) {
                 a.in[j] = in + j * SPAN + shift;
                 memcpy((float *)a.in[j], sample[j], sizeof sample[j]);
