@@ -229,6 +229,23 @@ static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, cha
     return 0;
 }
 
+/* The straight-line variant of the kernel for u's lights (src/simd/uniforms.h), 0 for the
+ * generic loop: 1..4 lights of one shape, directional or point with inverse-square falloff,
+ * with one of the kernel's own lobes. */
+static int variant_of(const sc_shade_uniforms *u)
+{
+    if (u->lobe == SC_LOBE_MODEL || u->n_lights < 1 || u->n_lights > SC_SHADE_FIXED_MAX)
+        return 0;
+    const sc_light_uniforms *first = &u->lights[0];
+    int shape = first->kind == SC_LIGHT_DIRECTIONAL                                        ? 0
+                : first->kind == SC_LIGHT_POINT && first->atten == SC_ATTEN_INVERSE_SQUARE ? 1
+                                                                                           : -1;
+    for (int k = 1; k < u->n_lights && shape >= 0; k++)
+        if (u->lights[k].kind != first->kind || u->lights[k].atten != first->atten)
+            shape = -1;
+    return shape < 0 ? 0 : 1 + SC_SHADE_FIXED_MAX * shape + (u->n_lights - 1);
+}
+
 static const char *const model_names[] = {"brdf", "ads", "opengl", "direct3d9"};
 
 int sc_uniforms_shade(const sc_scene *s, sc_shade_uniforms *u, char *why, size_t size)
@@ -256,5 +273,6 @@ int sc_uniforms_shade(const sc_scene *s, sc_shade_uniforms *u, char *why, size_t
     u->n_lights = s->n_lights;
     for (int c = 0; c < 3; c++)
         u->amb_term[c] = (float)(s->model.brdf.amb[c] * ambient[c]);
+    u->variant = variant_of(u);
     return 0;
 }

@@ -59,6 +59,12 @@ typedef struct {
     sc_func_uniforms atten_u, spot_u;
 } sc_light_uniforms;
 
+/* The shading kernel's straight-line variants: 1..SC_SHADE_FIXED_MAX lights, all directional
+ * or all point lights with inverse-square falloff, with the kernel's own lobes. Variant 0 is
+ * the generic loop; variant 1 + 4 s + (count − 1) is count lights of shape s (0 directional,
+ * 1 point). */
+enum { SC_SHADE_FIXED_MAX = 4, SC_SHADE_VARIANTS = 1 + 2 * SC_SHADE_FIXED_MAX };
+
 /* Integer lobe exponents up to this are raised by binary powering in the fast tiers (the
  * accurate tier stops at 64: see src/simd/shade_impl.h). */
 enum { SC_LOBE_INT_MAX = 256 };
@@ -73,6 +79,7 @@ typedef struct {
     unsigned lobe_m;                        /* m when an integer in 1..SC_LOBE_INT_MAX, else 0 */
     float lobe_cutoff;                      /* 2^(−100/m): powers below it flush to 0 */
     sc_brdf_uniforms brdf;                  /* SC_LOBE_MODEL */
+    int variant;                            /* the kernel's variant for the scene's lights */
 } sc_shade_uniforms;
 
 /* The uniforms of scene: 0, or -1 with why naming the model, light or form the kernels do not

@@ -566,6 +566,70 @@ static void plans_match_sc_shade(void **state)
         free(a.out[j]);
 }
 
+/* ---- the straight-line variants ---- */
+
+/* A plan of k lights of one shape (1..4 directional, or point with inverse-square falloff)
+ * runs straight-line code; the same lights plus one of the other kind with intensity 0 run the
+ * generic loop, whose extra term adds exactly 0: both give the same bits, every tier and
+ * instruction set, for each of the kernel's own lobes (the generic loop is the one
+ * tests/unit/test_batch.c bounds on 10^6 inputs). */
+static void fixed_variants_match_the_loop(void **state)
+{
+    (void)state;
+    static const sc_brdf_kind kinds[] = {SC_BRDF_LAMBERT, SC_BRDF_BLINN_PHONG,
+                                         SC_BRDF_COOK_TORRANCE};
+    static const char *const tiers[] = {"accurate", "bits12", "bits8"};
+    plan_arrays a, loop;
+    for (int j = 0; j < 9; j++)
+        assert_non_null(a.in[j] = malloc(N_PLAN * sizeof(float)));
+    for (int j = 0; j < 3; j++) {
+        assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
+        assert_non_null(loop.out[j] = malloc(N_PLAN * sizeof(float)));
+    }
+    plan_points(&a, N_PLAN);
+    for (int shape = 0; shape < 2; shape++)
+        for (int count = 1; count <= 4; count++)
+            for (size_t b = 0; b < sizeof kinds / sizeof kinds[0]; b++) {
+                sc_light lights[SC_BATCH_MAX_LIGHTS];
+                sc_scene fixed, generic;
+                sc_batch_example_scene(kinds[b], shape ? 0 : count + 1, shape ? count + 1 : 0, 0,
+                                       lights, &generic);
+                sc_light *extra = &lights[count];
+                sc_light_init(extra, shape ? SC_LIGHT_DIRECTIONAL : SC_LIGHT_POINT);
+                extra->pos[2] = 1.0;
+                extra->intensity[0] = extra->intensity[1] = extra->intensity[2] = 0.0;
+                extra->ambient[0] = extra->ambient[1] = extra->ambient[2] = 0.0;
+                fixed = generic;
+                fixed.n_lights = count;
+                for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+                    for (int t = 0; t < 3 && sc_isa_supported((sc_isa)isa); t++) {
+                        char why[256];
+                        sc_batch_plan *pf = sc_batch_plan_compile(&fixed, tiers[t], (sc_isa)isa,
+                                                                  why, sizeof why);
+                        sc_batch_plan *pg = sc_batch_plan_compile(&generic, tiers[t], (sc_isa)isa,
+                                                                  why, sizeof why);
+                        assert_non_null(pf);
+                        assert_non_null(pg);
+                        sc_batch_plan_shade(pf, (const float *const *)a.in, a.out, N_PLAN);
+                        sc_batch_plan_shade(pg, (const float *const *)a.in, loop.out, N_PLAN);
+                        for (int j = 0; j < 3; j++)
+                            if (memcmp(a.out[j], loop.out[j], N_PLAN * sizeof(float)) != 0)
+                                fail_msg("%d %s lights, %s, %s %s: the variant's bits differ",
+                                         count, shape ? "point" : "directional",
+                                         sc_brdf_kind_name(kinds[b]), tiers[t],
+                                         sc_isa_name((sc_isa)isa));
+                        sc_batch_plan_free(pf);
+                        sc_batch_plan_free(pg);
+                    }
+            }
+    for (int j = 0; j < 9; j++)
+        free(a.in[j]);
+    for (int j = 0; j < 3; j++) {
+        free(a.out[j]);
+        free(loop.out[j]);
+    }
+}
+
 /* The reason a plan is refused names the model, the light or its kind. */
 static void plans_refuse_with_reasons(void **state)
 {
@@ -674,6 +738,7 @@ int main(void)
         cmocka_unit_test(shade_lobe_exponents_within_bounds),
         cmocka_unit_test(plans_match_sc_shade),
         cmocka_unit_test(plans_refuse_with_reasons),
+        cmocka_unit_test(fixed_variants_match_the_loop),
         cmocka_unit_test(one_plan_many_threads),
     };
     return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);
