@@ -242,22 +242,21 @@ static void check_function(const char *kernel, const void *params, double hi, co
 
 /* Parameters at the edges of every attenuation function: a pure quadratic clq, a window with
  * r_start = r_end (a step), a flat pixar (f_c = f_max), r_max = 5. */
-static const sc_atten edge_atten = {.sc = 0.0,
-                                    .sl = 0.0,
-                                    .sq = 1.0,
-                                    .r_start = 5.0,
-                                    .r_end = 5.0,
-                                    .f_max = 3.0,
-                                    .f_c = 3.0,
-                                    .r_c = 5.0,
-                                    .s_e = 1.5,
-                                    .r_max = 5.0};
+static sc_atten edge_atten(void)
+{
+    sc_atten a = sc_batch_test_atten;
+    a.sc = a.sl = 0.0, a.sq = 1.0;      /* pure quadratic */
+    a.r_start = a.r_end = 5.0;          /* a step */
+    a.f_max = a.f_c = 3.0, a.r_c = 5.0; /* flat inside r_c */
+    a.s_e = 1.5, a.r_max = 5.0;
+    return a;
+}
 
 static void attenuation_edges(void **state)
 {
     (void)state;
     const float points[] = {0.0f, 0x1p-149f, 1e-3f, 5.0f, 0x1.3ffffep+2f, 0x1.400002p+2f, 10.0f};
-    sc_atten p = edge_atten;
+    sc_atten p = edge_atten();
     int n = (int)(sizeof points / sizeof points[0]);
     check_function("atten_invsq", &p, 20.0, points, n, "r = 0");
     check_function("atten_clq", &p, 20.0, points, n, "pure quadratic, r = 0");
@@ -274,7 +273,7 @@ static void attenuation_edges(void **state)
 static void attenuation_by_hand(void **state)
 {
     (void)state;
-    sc_atten p = edge_atten;
+    sc_atten p = edge_atten();
     float r[4] = {0.0f, 5.0f, 0x1.400002p+2f, 20.0f}, out[4];
     sc_batch_args a = {{r}, {out}, 4, &p};
     assert_int_equal(sc_batch_run("atten_window", "u2", &a), 0);
