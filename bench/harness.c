@@ -10,6 +10,7 @@
 #include "bench/bench.h"
 #include "bench/timer.h"
 #include "shadecalc/accuracy.h"
+#include "batch/reference.h"
 #include "cli/progress.h"
 
 enum { ACCURACY_SAMPLE = 1 << 16, MIN_SAMPLE_NS = 200000, MAX_ROWS = 4096 };
@@ -17,38 +18,42 @@ enum { ACCURACY_SAMPLE = 1 << 16, MIN_SAMPLE_NS = 200000, MAX_ROWS = 4096 };
 /* The scenes shade is measured with: what a scene names is what it pays for. */
 typedef struct {
     const char *name;
-    sc_batch_brdf brdf;
+    sc_brdf_kind brdf;
     int n_dir, n_point, n_spot;
 } bench_scene;
 static const bench_scene scenes[] = {
-    {"lambert 1d", SC_BATCH_LAMBERT, 1, 0, 0},
-    {"blinn-phong 1d", SC_BATCH_BLINN_PHONG, 1, 0, 0},
-    {"ggx 1d", SC_BATCH_GGX, 1, 0, 0},
-    {"blinn-phong 1p", SC_BATCH_BLINN_PHONG, 0, 1, 0},
-    {"blinn-phong 1s", SC_BATCH_BLINN_PHONG, 0, 0, 1},
-    {"blinn-phong 1d+3p", SC_BATCH_BLINN_PHONG, 1, 3, 0},
+    {"lambert 1d", SC_BRDF_LAMBERT, 1, 0, 0},
+    {"blinn-phong 1d", SC_BRDF_BLINN_PHONG, 1, 0, 0},
+    {"ggx 1d", SC_BRDF_COOK_TORRANCE, 1, 0, 0},
+    {"blinn-phong 1p", SC_BRDF_BLINN_PHONG, 0, 1, 0},
+    {"blinn-phong 1s", SC_BRDF_BLINN_PHONG, 0, 0, 1},
+    {"blinn-phong 4d", SC_BRDF_BLINN_PHONG, 4, 0, 0},
+    {"ggx 4d", SC_BRDF_COOK_TORRANCE, 4, 0, 0},
+    {"blinn-phong 1d+3p", SC_BRDF_BLINN_PHONG, 1, 3, 0},
 };
 enum { N_SCENES = (int)(sizeof scenes / sizeof scenes[0]) };
 
 /* Arithmetic operations per element of shade, counted from src/simd/shade_impl.h (an FMA, a
  * division or an estimate counts one): normalizing n and v and n·v; per light its direction,
  * falloff and spot factor, the cosine and the colour sums; the lobe. */
-static double shade_ops(const sc_batch_scene *s)
+static double shade_ops(const sc_scene *s)
 {
-    static const double lobe[] = {0, 46, 52}, light[] = {0, 23, 23 + 30};
+    static const double light[] = {0, 23, 23 + 30};
+    sc_brdf_kind kind = s->model.brdf.kind;
+    double lobe = kind == SC_BRDF_LAMBERT ? 0 : kind == SC_BRDF_BLINN_PHONG ? 46 : 52;
     double ops = 33;
     for (int k = 0; k < s->n_lights; k++)
-        ops += 19 + light[s->lights[k].kind] + lobe[s->brdf];
+        ops += 19 + light[s->lights[k].kind] + lobe;
     return ops;
 }
 
 /* Input arrays a kernel reads for a scene: shade reads p only for point lights. */
-static int inputs_read(const sc_batch_entry *e, const sc_batch_scene *s)
+static int inputs_read(const sc_batch_entry *e, const sc_scene *s)
 {
     if (!s)
         return e->n_in;
     for (int k = 0; k < s->n_lights; k++)
-        if (s->lights[k].kind != SC_BATCH_DIRECTIONAL)
+        if (s->lights[k].kind != SC_LIGHT_DIRECTIONAL)
             return 9;
     return 6;
 }
@@ -68,9 +73,10 @@ typedef struct {
     bench_arrays timed, checked;
     double *ref; /* (n_out + 1) per element of `checked` */
     size_t n;
-    sc_batch_scene scene;
-    int has_scene;
-    const void *params; /* the kernel's test parameters (batch table) */
+    sc_light lights[SC_BATCH_MAX_LIGHTS];
+    sc_scene scene;
+    sc_batch_plan *plan; /* shade: the scene's plan (the shade rows' params) */
+    const void *params;  /* the kernel's parameters: its batch table's, or the plan */
 } bench_data;
 
 static void arrays_free(bench_arrays *b)
@@ -86,11 +92,12 @@ static void data_free(bench_data *d)
     arrays_free(&d->timed);
     arrays_free(&d->checked);
     free(d->ref);
+    sc_batch_plan_free(d->plan);
 }
 
 static sc_batch_args arrays_args(const bench_data *d, const bench_arrays *b)
 {
-    sc_batch_args a = {{0}, {0}, b->n, d->has_scene ? &d->scene : NULL, d->params};
+    sc_batch_args a = {{0}, {0}, b->n, d->params};
     for (int j = 0; j < 9; j++)
         a.in[j] = b->in[j];
     for (int j = 0; j < 3; j++)
@@ -140,8 +147,12 @@ static int data_make(bench_data *d, const sc_batch_entry *domain_of, size_t n,
     d->n = n;
     d->params = domain_of->params;
     if (bs) {
-        sc_batch_scene_example(bs->brdf, bs->n_dir, bs->n_point, bs->n_spot, &d->scene);
-        d->has_scene = 1;
+        char why[256];
+        sc_batch_example_scene(bs->brdf, bs->n_dir, bs->n_point, bs->n_spot, d->lights, &d->scene);
+        if (!(d->plan = sc_batch_plan_compile(&d->scene, domain_of->tier, SC_ISA_SCALAR, why,
+                                              sizeof why)))
+            return -1;
+        d->params = d->plan;
     }
     size_t checked = n < ACCURACY_SAMPLE ? n : ACCURACY_SAMPLE;
     if (arrays_make(&d->timed, domain_of, n, 1) != 0 ||
@@ -314,7 +325,7 @@ static bench_row *add_row(bench_state *st, const char *kernel, const char *isa, 
 static void roofline(const bench_state *st, const sc_batch_entry *e, const bench_data *d, int width,
                      bench_row *r)
 {
-    const sc_batch_scene *s = d->has_scene ? &d->scene : NULL;
+    const sc_scene *s = d->plan ? &d->scene : NULL;
     double ops = s ? shade_ops(s) : e->ops;
     double compute = ops / (st->m->lane_ops_ns * width / 8.0);
     double bytes = 4.0 * (inputs_read(e, s) + e->n_out);

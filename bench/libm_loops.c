@@ -115,13 +115,58 @@ static void unit(float *v)
             v[c] /= len;
 }
 
-static float specular(const sc_batch_scene *s, const float *n, const float *v, const float *l,
-                      float nl, float nv)
+/* The scene in float, as a user's program keeps it: lights, and the BRDF (lambert, normalized
+ * blinn-phong or GGX: the bench's scenes). */
+typedef struct {
+    int kind, spot; /* sc_light_kind, sc_spot_kind */
+    float dir[3], pos[3], color[3], cos_outer, cos_inner, exponent;
+} user_light;
+
+typedef struct {
+    user_light lights[SC_BATCH_MAX_LIGHTS];
+    int n_lights, brdf; /* sc_brdf_kind */
+    float diff[3], spec[3], amb_term[3], m, alpha, f0;
+} user_scene;
+
+static void user_scene_of(const sc_scene *s, user_scene *u)
+{
+    const sc_brdf *b = &s->model.brdf;
+    const float deg = SC_PI_F / 180.0f;
+    u->n_lights = s->n_lights;
+    u->brdf = (int)b->kind;
+    for (int k = 0; k < s->n_lights; k++) {
+        const sc_light *l = &s->lights[k];
+        user_light *ul = &u->lights[k];
+        ul->kind = (int)l->kind;
+        ul->spot = (int)l->spot.kind;
+        for (int c = 0; c < 3; c++) {
+            ul->dir[c] = (float)l->dir[c];
+            ul->pos[c] = (float)l->pos[c];
+            ul->color[c] = (float)l->intensity[c];
+        }
+        ul->cos_outer = l->spot.kind == SC_SPOT_OPENGL
+                            ? (l->spot.cutoff == 180.0 ? -2.0f : cosf((float)l->spot.cutoff * deg))
+                            : cosf((float)l->spot.outer * deg);
+        ul->cos_inner = cosf((float)l->spot.inner * deg);
+        ul->exponent = (float)l->spot.exponent;
+    }
+    for (int c = 0; c < 3; c++) {
+        u->diff[c] = (float)b->diff[c];
+        u->spec[c] = (float)b->spec[c];
+        u->amb_term[c] = (float)(b->amb[c] * s->ambient[c]);
+    }
+    u->m = (float)b->m;
+    u->alpha = (float)b->ax;
+    u->f0 = (float)b->f0[0];
+}
+
+static float specular(const user_scene *s, const float *n, const float *v, const float *l, float nl,
+                      float nv)
 {
     float h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
     unit(h);
     float nh = fmaxf(dot3(n, h), 0.0f);
-    if (s->brdf == SC_BATCH_BLINN_PHONG)
+    if (s->brdf == SC_BRDF_BLINN_PHONG)
         return (s->m + 8.0f) / (8.0f * SC_PI_F) * powf(nh, s->m);
     float a2 = s->alpha * s->alpha, d = nh * nh * (a2 - 1.0f) + 1.0f;
     float D = a2 / (SC_PI_F * d * d);
@@ -131,10 +176,10 @@ static float specular(const sc_batch_scene *s, const float *n, const float *v, c
     return D * V * F;
 }
 
-static float spot(const sc_batch_light *lt, const float *l)
+static float spot(const user_light *lt, const float *l)
 {
     float cos_s = -dot3(l, lt->dir);
-    if (lt->spot == SC_BATCH_SPOT_OPENGL)
+    if (lt->spot == SC_SPOT_OPENGL)
         return lt->cos_outer <= -1.0f   ? 1.0f
                : cos_s >= lt->cos_outer ? powf(cos_s, lt->exponent)
                                         : 0.0f;
@@ -143,10 +188,10 @@ static float spot(const sc_batch_light *lt, const float *l)
     if (cos_s <= lt->cos_outer)
         return 0.0f;
     float t = (cos_s - lt->cos_outer) / (lt->cos_inner - lt->cos_outer);
-    return lt->spot == SC_BATCH_SPOT_SMOOTHSTEP ? t * t * (3.0f - 2.0f * t) : powf(t, lt->exponent);
+    return lt->spot == SC_SPOT_SMOOTHSTEP ? t * t * (3.0f - 2.0f * t) : powf(t, lt->exponent);
 }
 
-static void shade_one(const sc_batch_scene *s, float n[3], float v[3], const float p[3], float *rgb)
+static void shade_one(const user_scene *s, float n[3], float v[3], const float p[3], float *rgb)
 {
     unit(n);
     unit(v);
@@ -154,28 +199,31 @@ static void shade_one(const sc_batch_scene *s, float n[3], float v[3], const flo
     for (int c = 0; c < 3; c++)
         rgb[c] = s->amb_term[c];
     for (int k = 0; k < s->n_lights; k++) {
-        const sc_batch_light *lt = &s->lights[k];
+        const user_light *lt = &s->lights[k];
         float l[3], e = 1.0f;
         memcpy(l, lt->dir, sizeof l);
-        if (lt->kind != SC_BATCH_DIRECTIONAL) {
+        if (lt->kind != SC_LIGHT_DIRECTIONAL) {
             for (int c = 0; c < 3; c++)
                 l[c] = lt->pos[c] - p[c];
             e = 1.0f / fmaxf(dot3(l, l), 1e-4f);
             unit(l);
-            if (lt->kind == SC_BATCH_SPOT)
+            if (lt->kind == SC_LIGHT_SPOT)
                 e *= spot(lt, l);
         }
         float nl = dot3(n, l);
         if (nl <= 0.0f || nv <= 0.0f)
             continue;
-        float sp = s->brdf == SC_BATCH_LAMBERT ? 0.0f : specular(s, n, v, l, nl, nv);
+        float sp = s->brdf == SC_BRDF_LAMBERT ? 0.0f : specular(s, n, v, l, nl, nv);
         for (int c = 0; c < 3; c++)
             rgb[c] += (s->diff[c] / SC_PI_F + s->spec[c] * sp) * lt->color[c] * e * nl;
     }
 }
 
+/* params: the scene's plan (batch.h), whose double scene the loop copies to floats first */
 static void loop_shade(const sc_batch_args *a)
 {
+    static _Thread_local user_scene s;
+    user_scene_of(sc_batch_plan_scene(a->params), &s);
     for (size_t i = 0; i < a->n; i++) {
         float n[3], v[3], p[3], rgb[3];
         for (int c = 0; c < 3; c++) {
@@ -183,7 +231,7 @@ static void loop_shade(const sc_batch_args *a)
             v[c] = a->in[3 + c][i];
             p[c] = a->in[6 + c][i];
         }
-        shade_one(a->scene, n, v, p, rgb);
+        shade_one(&s, n, v, p, rgb);
         for (int c = 0; c < 3; c++)
             a->out[c][i] = rgb[c];
     }
@@ -191,10 +239,31 @@ static void loop_shade(const sc_batch_args *a)
 
 /* ---- attenuation, spot, and the BRDF of the table's row (cook-torrance GGX) ---- */
 
+/* The parameters in float, as a user's program keeps them. */
+typedef struct {
+    float sc, sl, sq, r_start, r_end, f_max, f_c, r_c, s_e, r_max;
+} user_atten;
+
+static user_atten user_atten_of(const sc_atten *a)
+{
+    return (user_atten){(float)a->sc,    (float)a->sl,    (float)a->sq,  (float)a->r_start,
+                        (float)a->r_end, (float)a->f_max, (float)a->f_c, (float)a->r_c,
+                        (float)a->s_e,   (float)a->r_max};
+}
+
+typedef struct {
+    float exponent, cutoff, inner, outer;
+} user_spot;
+
+static user_spot user_spot_of(const sc_spot *s)
+{
+    return (user_spot){(float)s->exponent, (float)s->cutoff, (float)s->inner, (float)s->outer};
+}
+
 #define ATTEN_LOOP(name, expr)                                                                     \
     static void loop_##name(const sc_batch_args *a)                                                \
     {                                                                                              \
-        const sc_batch_atten_params p = *(const sc_batch_atten_params *)a->params;                 \
+        const user_atten p = user_atten_of(a->params);                                             \
         const float *restrict in = a->in[0];                                                       \
         float *restrict out = a->out[0];                                                           \
         size_t n = a->n;                                                                           \
@@ -216,7 +285,7 @@ ATTEN_LOOP(atten_windowed, powf(fminf(fmaxf(1.0f - powf(r / p.r_max, 4.0f), 0.0f
 
 static void loop_atten_pixar(const sc_batch_args *a)
 {
-    const sc_batch_atten_params p = *(const sc_batch_atten_params *)a->params;
+    const user_atten p = user_atten_of(a->params);
     const float *restrict in = a->in[0];
     float *restrict out = a->out[0];
     float k0 = logf(p.f_c / p.f_max), k1 = p.s_e / k0;
@@ -232,7 +301,7 @@ static const float deg_f = SC_PI_F / 180.0f;
 
 static void loop_spot_opengl(const sc_batch_args *a)
 {
-    const sc_batch_spot_params p = *(const sc_batch_spot_params *)a->params;
+    const user_spot p = user_spot_of(a->params);
     const float *restrict in = a->in[0];
     float *restrict out = a->out[0];
     float cu = cosf(p.cutoff * deg_f);
@@ -244,7 +313,7 @@ static void loop_spot_opengl(const sc_batch_args *a)
 
 static void spot_loop(const sc_batch_args *a, int smooth)
 {
-    const sc_batch_spot_params p = *(const sc_batch_spot_params *)a->params;
+    const user_spot p = user_spot_of(a->params);
     const float *restrict in = a->in[0];
     float *restrict out = a->out[0];
     float cp = cosf(p.inner * deg_f), cu = cosf(p.outer * deg_f);
@@ -260,8 +329,13 @@ static void loop_spot_smoothstep(const sc_batch_args *a) { spot_loop(a, 1); }
 /* f (or f cos θ_i) of cook-torrance GGX, Smith height-correlated, Schlick per channel */
 static void loop_brdf(const sc_batch_args *a)
 {
-    const sc_batch_brdf_params *p = a->params;
-    float a2 = p->alpha * p->alpha;
+    const sc_brdf *p = a->params;
+    float a2 = (float)(p->ax * p->ax), f0[3], diff[3], spec[3];
+    for (int c = 0; c < 3; c++) {
+        f0[c] = (float)p->f0[c];
+        diff[c] = (float)p->diff[c];
+        spec[c] = (float)p->spec[c];
+    }
     for (size_t i = 0; i < a->n; i++) {
         float l[3], v[3], n[3];
         for (int c = 0; c < 3; c++) {
@@ -278,11 +352,11 @@ static void loop_brdf(const sc_batch_args *a)
         float D = a2 / (SC_PI_F * d * d);
         float V = 0.5f /
                   (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
-        float m5 = powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f), w = p->cos ? nl : 1.0f;
+        float m5 = powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f);
         for (int c = 0; c < 3; c++) {
-            float F = p->f0[c] + (1.0f - p->f0[c]) * m5;
-            float f = p->diff[c] / SC_PI_F + p->spec[c] * D * V * F;
-            a->out[c][i] = ((nl > 0.0f) & (nv > 0.0f)) ? f * w : 0.0f;
+            float F = f0[c] + (1.0f - f0[c]) * m5;
+            float f = diff[c] / SC_PI_F + spec[c] * D * V * F;
+            a->out[c][i] = ((nl > 0.0f) & (nv > 0.0f)) ? f : 0.0f;
         }
     }
 }

@@ -47,7 +47,7 @@ static double stream_bandwidth(void)
     }
     for (size_t i = 0; i < N; i++)
         x[i] = y[i] = (float)i;
-    sc_batch_args a = {{x}, {y}, N, NULL, NULL};
+    sc_batch_args a = {{x}, {y}, N, NULL};
     double best = 0.0;
     for (int r = 0; r < 3; r++) {
         double t0 = bench_now_ns();

@@ -10,10 +10,19 @@
 
 #include "shadecalc/batch.h"
 
+#include "batch/reference.h"
+
 static int margin(const sc_batch_entry *e, uint64_t *rng, size_t n, float **in, float **out)
 {
-    sc_batch_scene scene;
-    sc_batch_scene_example(SC_BATCH_GGX, 1, 1, 3, &scene);
+    sc_light lights[SC_BATCH_MAX_LIGHTS];
+    sc_scene scene;
+    char why[256];
+    sc_batch_example_scene(SC_BRDF_COOK_TORRANCE, 1, 1, 3, lights, &scene);
+    sc_batch_plan *plan = sc_batch_plan_compile(&scene, "accurate", SC_ISA_SCALAR, why, sizeof why);
+    if (!plan) {
+        fprintf(stderr, "batch_margin: %s\n", why);
+        return 1;
+    }
     for (size_t k = 0; k < n; k++) {
         float v[9];
         sc_batch_sample(e, rng, v);
@@ -23,13 +32,13 @@ static int margin(const sc_batch_entry *e, uint64_t *rng, size_t n, float **in, 
     sc_batch_args a = {{in[0], in[1], in[2], in[3], in[4], in[5], in[6], in[7], in[8]},
                        {out[0], out[1], out[2]},
                        n,
-                       strcmp(e->kernel, "shade") == 0 ? &scene : NULL,
-                       e->params};
+                       strcmp(e->kernel, "shade") == 0 ? (const void *)plan : e->params};
     e->fn(&a);
     sc_batch_error acc;
     sc_batch_error_init(&acc);
     sc_batch_error_of(e, &a, &acc);
     printf("%-16s %-9s %-7s %6.3f\n", e->kernel, e->tier, sc_isa_name(e->isa), acc.max_ratio);
+    sc_batch_plan_free(plan);
     return acc.max_ratio > 1.0;
 }
 

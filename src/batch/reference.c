@@ -89,101 +89,62 @@ void sc_batch_ref_length(const sc_batch_args *a, size_t i, double *out)
     out[1] = 1.0;
 }
 
-/* The scene's BRDF as the library's double model (brdf.h). */
-static void scene_brdf(const sc_batch_scene *s, sc_brdf *b)
-{
-    static const sc_brdf_kind kinds[] = {SC_BRDF_LAMBERT, SC_BRDF_BLINN_PHONG,
-                                         SC_BRDF_COOK_TORRANCE};
-    sc_brdf_init(b, kinds[s->brdf]);
-    for (int c = 0; c < 3; c++) {
-        b->diff[c] = s->diff[c];
-        b->spec[c] = s->brdf == SC_BATCH_LAMBERT ? 0.0 : s->spec[c];
-        b->f0[c] = s->f0;
-    }
-    b->m = s->m;
-    b->ax = b->ay = s->alpha;
-    b->D = SC_D_GGX;
-    b->G = SC_G_SMITH_CORRELATED;
-    b->F = SC_F_SCHLICK;
-}
-
-static double degrees_of(double cosine)
-{
-    return acos(fmax(-1.0, fmin(1.0, cosine))) * 57.29577951308232;
-}
-
-/* The batch light as light.h's light: the reference evaluates it with sc_light_eval. */
-static void light_of(const sc_batch_light *b, sc_light *out)
-{
-    static const sc_light_kind kinds[] = {SC_LIGHT_DIRECTIONAL, SC_LIGHT_POINT, SC_LIGHT_SPOT};
-    static const sc_spot_kind spots[] = {SC_SPOT_OPENGL, SC_SPOT_DIRECTX, SC_SPOT_SMOOTHSTEP};
-    sc_light_init(out, kinds[b->kind]);
-    for (int c = 0; c < 3; c++) {
-        out->dir[c] = b->dir[c];
-        out->pos[c] = b->pos[c];
-        out->intensity[c] = b->color[c];
-    }
-    out->spot.kind = spots[b->spot];
-    out->spot.exponent = b->exponent;
-    out->spot.cutoff = b->cos_outer <= -1.0f ? 180.0 : degrees_of(b->cos_outer);
-    out->spot.outer = degrees_of(b->cos_outer);
-    out->spot.inner = degrees_of(b->cos_inner);
-}
-
 /* 1 if cos θ_s lies within 2^-16 of a hard edge of the light's cone, where the spot factor
  * jumps (opengl's cutoff, directx and smoothstep with inner = outer): there a rounding of l
  * decides between the lit and the unlit value, so no error bound can hold. */
-static int at_hard_edge(const sc_batch_light *lt, double cos_s)
+static int at_hard_edge(const sc_light *lt, double cos_s)
 {
-    double edge;
-    if (lt->kind != SC_BATCH_SPOT)
+    const double radians = 0.017453292519943295;
+    double edge = 2.0;
+    if (lt->kind != SC_LIGHT_SPOT)
         return 0;
-    if (lt->spot == SC_BATCH_SPOT_OPENGL)
-        edge = lt->cos_outer > -1.0f ? lt->cos_outer : 2.0;
-    else
-        edge = lt->cos_inner > lt->cos_outer ? 2.0 : lt->cos_inner;
+    if (lt->spot.kind == SC_SPOT_OPENGL && lt->spot.cutoff != 180.0)
+        edge = cos(lt->spot.cutoff * radians);
+    else if (lt->spot.kind != SC_SPOT_OPENGL && lt->spot.inner == lt->spot.outer)
+        edge = cos(lt->spot.inner * radians);
     return fabs(cos_s - edge) < 0x1p-16;
 }
 
-/* out[0..2] the radiance; out[3] the scale of the allowance: ambient plus Σ E f without the
- * cosine (an error of ε in n·l, inevitable in float, moves the result by about ε E f); +Inf
- * (outside the stated domain) at a hard edge of a spot cone. */
+/* out[0..2] the radiance of the plan's scene (sc_shade's equation in double, on the float
+ * inputs); out[3] the scale of the allowance: ambient plus Σ E (c_diff/π + |diffuse| +
+ * specular) without the cosine (an error of ε in n·l, inevitable in float, moves the result by
+ * about ε E f); +Inf (outside the stated domain) at a hard edge of a spot cone. */
 void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
 {
-    const sc_batch_scene *s = a->scene;
-    double n[3], v[3], p[3];
+    const sc_scene *s = sc_batch_plan_scene(a->params);
+    sc_shade_point at;
+    double n[3], v[3];
     load3(a, 0, i, n);
     load3(a, 3, i, v);
-    load3(a, 6, i, p);
-    sc_brdf b;
-    scene_brdf(s, &b);
-    sc_frame frame;
-    double vlen = sqrt(dot3(v, v));
+    load3(a, 6, i, at.pos);
+    const sc_brdf *b = &s->model.brdf;
+    double vlen = sqrt(dot3(v, v)), amb[3];
     out[3] = 0.0;
     for (int c = 0; c < 3; c++) {
-        out[c] = s->amb_term[c];
-        out[3] = fmax(out[3], fabs(s->amb_term[c]));
+        amb[c] = s->ambient[c];
+        for (int k = 0; k < s->n_lights; k++)
+            amb[c] += s->lights[k].ambient[c];
+        out[c] = b->amb[c] * amb[c];
+        out[3] = fmax(out[3], fabs(out[c]));
     }
-    if (sc_frame_make(n, NULL, &frame) != 0 || vlen == 0.0)
+    if (sc_frame_make(n, NULL, &at.frame) != 0 || vlen == 0.0)
         return;
     for (int c = 0; c < 3; c++)
-        v[c] /= vlen;
+        at.v[c] = v[c] / vlen;
+    sc_light_terms terms[SC_BATCH_MAX_LIGHTS];
+    sc_shade_result r = {.per_light = terms};
+    sc_shade(SC_DOUBLE, s, &at, &r);
     double scale = 0.0;
     for (int k = 0; k < s->n_lights; k++) {
-        sc_light light;
-        sc_light_sample ls;
-        light_of(&s->lights[k], &light);
-        sc_light_eval(SC_DOUBLE, &light, p, frame.n, &ls);
-        sc_brdf_terms t;
-        sc_brdf_eval(SC_DOUBLE, &b, &frame, ls.l, v, &t);
-        double cos_i = dot3(frame.n, ls.l);
-        if (at_hard_edge(&s->lights[k], ls.cos_s))
+        const sc_light_terms *t = &terms[k];
+        if (at_hard_edge(&s->lights[k], t->light.cos_s))
             scale = INFINITY;
-        for (int c = 0; c < 3; c++) {
-            out[c] += cos_i > 0.0 ? t.f[c] * ls.E[c] * cos_i : 0.0;
-            scale = fmax(scale, ls.E[c] * (b.diff[c] / 3.141592653589793 + t.specular[c]));
-        }
+        for (int c = 0; c < 3; c++)
+            scale = fmax(scale, t->light.E[c] * (b->diff[c] / 3.141592653589793 +
+                                                 fabs(t->brdf.diffuse[c]) + t->brdf.specular[c]));
     }
+    for (int c = 0; c < 3; c++)
+        out[c] = r.L[c];
     out[3] += scale;
 }
 
@@ -248,38 +209,37 @@ void sc_batch_sample(const sc_batch_entry *e, uint64_t *rng, float *in)
 
 /* ---- the standard scenes ---- */
 
-static const char *const brdf_names[] = {"lambert", "blinn-phong", "ggx"};
-const char *sc_batch_brdf_name(sc_batch_brdf brdf) { return brdf_names[brdf]; }
-
-void sc_batch_scene_example(sc_batch_brdf brdf, int n_dir, int n_point, int n_spot,
-                            sc_batch_scene *out)
+void sc_batch_example_scene(sc_brdf_kind brdf, int n_dir, int n_point, int n_spot,
+                            sc_light lights[SC_BATCH_MAX_LIGHTS], sc_scene *out)
 {
-    memset(out, 0, sizeof *out);
-    out->brdf = brdf;
+    static const sc_spot_kind spots[] = {SC_SPOT_OPENGL, SC_SPOT_DIRECTX, SC_SPOT_SMOOTHSTEP};
+    int n = 0;
     for (int k = 0; k < n_dir + n_point + n_spot && k < SC_BATCH_MAX_LIGHTS; k++) {
-        sc_batch_light *lt = &out->lights[out->n_lights++];
+        sc_light *lt = &lights[n++];
         double a = 2.399963 * k; /* golden-angle spread around +y */
         double d[3] = {0.6 * cos(a), 0.8, 0.6 * sin(a)};
-        lt->kind = k < n_dir             ? SC_BATCH_DIRECTIONAL
-                   : k < n_dir + n_point ? SC_BATCH_POINT
-                                         : SC_BATCH_SPOT;
+        sc_light_init(lt, k < n_dir             ? SC_LIGHT_DIRECTIONAL
+                          : k < n_dir + n_point ? SC_LIGHT_POINT
+                                                : SC_LIGHT_SPOT);
         for (int c = 0; c < 3; c++) {
-            lt->pos[c] = (float)(4.0 * d[c]);
-            lt->dir[c] = (float)(lt->kind == SC_BATCH_SPOT ? -d[c] : d[c]); /* spots aim back */
-            lt->color[c] = lt->kind == SC_BATCH_DIRECTIONAL ? 1.0f : 16.0f;
+            lt->pos[c] = 4.0 * d[c];
+            lt->dir[c] = lt->kind == SC_LIGHT_SPOT ? -d[c] : d[c]; /* spots aim back */
+            lt->intensity[c] = lt->kind == SC_LIGHT_DIRECTIONAL ? 1.0 : 16.0;
+            lt->ambient[c] = 0.0;
         }
-        lt->spot = (sc_batch_spot)(k % 3); /* the three kinds in turn; cones of 25° to 40° */
-        lt->cos_inner = 0.906307787f;
-        lt->cos_outer = 0.766044443f;
-        lt->exponent = 2.0f;
+        lt->spot.kind = spots[k % 3]; /* the three kinds in turn; cones of 25° to 40° */
+        lt->spot.cutoff = 40.0;
+        lt->spot.inner = 25.0;
+        lt->spot.outer = 40.0;
+        lt->spot.exponent = 2.0;
     }
-    const float diff[3] = {0.8f, 0.5f, 0.2f};
+    *out = (sc_scene){lights, n, {0}, {0.02, 0.02, 0.02}};
+    sc_model_init(&out->model, SC_MODEL_BRDF);
+    sc_brdf_init(&out->model.brdf, brdf);
+    static const double diff[3] = {0.8, 0.5, 0.2};
     for (int c = 0; c < 3; c++) {
-        out->diff[c] = diff[c];
-        out->spec[c] = brdf == SC_BATCH_GGX ? 1.0f : 0.2f;
-        out->amb_term[c] = 0.02f;
+        out->model.brdf.diff[c] = diff[c];
+        out->model.brdf.spec[c] = brdf == SC_BRDF_COOK_TORRANCE ? 1.0 : 0.2;
+        out->model.brdf.amb[c] = 1.0;
     }
-    out->m = 32.0f;
-    out->alpha = 0.3f;
-    out->f0 = 0.04f;
 }

@@ -3,6 +3,7 @@
 #define SHADECALC_BATCH_REFERENCE_H
 
 #include "shadecalc/batch.h"
+#include "shadecalc/shade.h"
 
 /* clang-format off */
 #define SC_BATCH_REFS(X)                                                                          \
@@ -16,5 +17,12 @@ void sc_batch_gen_pair(uint64_t *rng, float *in);    /* two vectors of magnitude
 void sc_batch_gen_reflect(uint64_t *rng, float *in); /* I of magnitude 2^±8, N unit */
 void sc_batch_gen_vector(uint64_t *rng, float *in);  /* one vector of magnitude 2^±60 */
 void sc_batch_gen_shade(uint64_t *rng, float *in); /* n, v (|cos θ_o| >= 2^-6), p in [−3, 3]³ */
+
+/* The scenes of the tests and of `shadecalc bench`: n_dir directional, n_point point and n_spot
+ * spot lights (the three spot kinds in turn, cones of 25° to 40°) around +y, the BRDF's
+ * defaults (brdf.h: m 32, α 0.3, f0 0.04) with diff 0.8/0.5/0.2, spec 0.2 (cook-torrance 1),
+ * ambient 0.02. lights holds the lights out points to. */
+void sc_batch_example_scene(sc_brdf_kind brdf, int n_dir, int n_point, int n_spot,
+                            sc_light lights[SC_BATCH_MAX_LIGHTS], sc_scene *out);
 
 #endif

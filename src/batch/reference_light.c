@@ -14,17 +14,16 @@ static const double pi = 3.14159265358979323846;
 
 static void atten_ref(sc_atten_kind kind, const sc_batch_args *a, size_t i, double *out)
 {
-    const sc_batch_atten_params *p = a->params;
-    sc_atten at = {kind,     p->sc,  p->sl,  p->sq,  p->r_start, p->r_end,
-                   p->f_max, p->f_c, p->r_c, p->s_e, p->r_max};
+    sc_atten at = *(const sc_atten *)a->params;
+    at.kind = kind;
     out[0] = sc_atten_eval(SC_DOUBLE, &at, (double)a->in[0][i]);
     out[1] = 1.0;
 }
 
 static void spot_ref(sc_spot_kind kind, const sc_batch_args *a, size_t i, double *out)
 {
-    const sc_batch_spot_params *p = a->params;
-    sc_spot s = {kind, p->exponent, p->cutoff, p->inner, p->outer};
+    sc_spot s = *(const sc_spot *)a->params;
+    s.kind = kind;
     out[0] = sc_spot_eval(SC_DOUBLE, &s, (double)a->in[0][i]);
     out[1] = 1.0;
 }
@@ -61,24 +60,6 @@ static int unit_input(const sc_batch_args *a, int first, size_t i, double v[3])
     return 1;
 }
 
-static void brdf_of(sc_brdf_kind kind, const sc_batch_brdf_params *p, sc_brdf *b)
-{
-    sc_brdf_init(b, kind);
-    b->form = p->form;
-    for (int c = 0; c < 3; c++) {
-        b->diff[c] = p->diff[c];
-        b->spec[c] = p->spec[c];
-        b->f0[c] = p->f0[c];
-    }
-    b->m = p->m;
-    b->ax = b->ay = p->alpha;
-    b->sigma = p->sigma;
-    b->ior = p->ior;
-    b->D = (sc_ndf)p->D;
-    b->G = (sc_masking)p->G;
-    b->F = (sc_fresnel)p->F;
-}
-
 /* The peak of a cosine lobe's normalization (phong, blinn-phong), 0 for the other models: an
  * error δ in the lobe's cosine moves f by up to about m δ times it. */
 static double lobe_peak(const sc_brdf *b, double cos_i)
@@ -92,11 +73,11 @@ static double lobe_peak(const sc_brdf *b, double cos_i)
     return 0.0;
 }
 
-/* out[0..2] = f (times cos θ_i with the cos flag); out[3], the scale of the absolute allowance:
- * c_diff/π plus the diffuse and specular terms plus the lobe's peak, times the same cosine. */
-static void brdf_ref(sc_brdf_kind kind, const sc_batch_args *a, size_t i, double *out)
+/* out[0..2] = f; out[3], the scale of the absolute allowance: c_diff/π plus the diffuse and
+ * specular terms plus the lobe's peak. */
+void sc_batch_ref_brdf(const sc_batch_args *a, size_t i, double *out)
 {
-    const sc_batch_brdf_params *p = a->params;
+    const sc_brdf *b = a->params;
     double l[3], v[3], n[3];
     sc_frame frame;
     for (int c = 0; c < 4; c++)
@@ -104,23 +85,14 @@ static void brdf_ref(sc_brdf_kind kind, const sc_batch_args *a, size_t i, double
     if (!unit_input(a, 0, i, l) || !unit_input(a, 3, i, v) || !unit_input(a, 6, i, n) ||
         sc_frame_make(n, NULL, &frame) != 0)
         return;
-    sc_brdf b;
-    brdf_of(kind, p, &b);
     sc_brdf_terms t;
-    sc_brdf_eval(SC_DOUBLE, &b, &frame, l, v, &t);
-    double weight = p->cos ? fmax(t.cos_i, 0.0) : 1.0, peak = lobe_peak(&b, t.cos_i);
+    sc_brdf_eval(SC_DOUBLE, b, &frame, l, v, &t);
+    double peak = lobe_peak(b, t.cos_i);
     for (int c = 0; c < 3; c++) {
-        out[c] = t.f[c] * weight;
-        double scale = b.diff[c] / pi + fabs(t.diffuse[c]) + t.specular[c] + b.spec[c] * peak;
-        out[3] = fmax(out[3], scale * weight);
+        out[c] = t.f[c];
+        out[3] = fmax(out[3],
+                      b->diff[c] / pi + fabs(t.diffuse[c]) + t.specular[c] + b->spec[c] * peak);
     }
-}
-
-void sc_batch_ref_brdf(const sc_batch_args *a, size_t i, double *out)
-{
-    const sc_batch_brdf_params *p = a->params;
-    int model = p->model >= 0 && p->model <= SC_BRDF_COOK_TORRANCE ? p->model : 0;
-    brdf_ref((sc_brdf_kind)model, a, i, out);
 }
 
 /* ---- generator ---- */
@@ -178,29 +150,31 @@ void sc_batch_gen_brdf(uint64_t *rng, float *in)
 
 /* ---- the rows' parameters ---- */
 
-const sc_batch_atten_params sc_batch_test_atten = {.sc = 1.0f,
-                                                   .sl = 0.5f,
-                                                   .sq = 0.25f,
-                                                   .r_start = 1.0f,
-                                                   .r_end = 10.0f,
-                                                   .f_max = 4.0f,
-                                                   .f_c = 1.0f,
-                                                   .r_c = 2.0f,
-                                                   .s_e = 2.0f,
-                                                   .r_max = 10.0f};
+const sc_atten sc_batch_test_atten = {.kind = SC_ATTEN_CLQ,
+                                      .sc = 1.0,
+                                      .sl = 0.5,
+                                      .sq = 0.25,
+                                      .r_start = 1.0,
+                                      .r_end = 10.0,
+                                      .f_max = 4.0,
+                                      .f_c = 1.0,
+                                      .r_c = 2.0,
+                                      .s_e = 2.0,
+                                      .r_max = 10.0};
 
-const sc_batch_spot_params sc_batch_test_spot = {
-    .exponent = 8.0f, .cutoff = 45.0f, .inner = 20.0f, .outer = 40.0f};
+const sc_spot sc_batch_test_spot = {
+    .kind = SC_SPOT_OPENGL, .exponent = 8.0, .cutoff = 45.0, .inner = 20.0, .outer = 40.0};
 
-const sc_batch_brdf_params sc_batch_test_brdf = {.model = SC_BRDF_COOK_TORRANCE,
-                                                 .form = SC_CT_WALTER,
-                                                 .D = SC_D_GGX,
-                                                 .G = SC_G_SMITH_CORRELATED,
-                                                 .F = SC_F_SCHLICK,
-                                                 .diff = {0.8f, 0.5f, 0.2f},
-                                                 .spec = {0.2f, 0.3f, 0.4f},
-                                                 .f0 = {0.04f, 0.5f, 0.9f},
-                                                 .m = 32.0f,
-                                                 .alpha = 0.3f,
-                                                 .sigma = 0.5f,
-                                                 .ior = 1.5f};
+const sc_brdf sc_batch_test_brdf = {.kind = SC_BRDF_COOK_TORRANCE,
+                                    .form = SC_CT_WALTER,
+                                    .D = SC_D_GGX,
+                                    .G = SC_G_SMITH_CORRELATED,
+                                    .F = SC_F_SCHLICK,
+                                    .diff = {0.8, 0.5, 0.2},
+                                    .spec = {0.2, 0.3, 0.4},
+                                    .f0 = {0.04, 0.5, 0.9},
+                                    .m = 32.0,
+                                    .ax = 0.3,
+                                    .ay = 0.3,
+                                    .sigma = 0.5,
+                                    .ior = 1.5};

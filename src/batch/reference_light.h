@@ -6,6 +6,7 @@
 #include "batch/reference.h"
 #include "shadecalc/batch.h"
 #include "shadecalc/brdf.h"
+#include "shadecalc/light.h"
 
 /* clang-format off */
 #define SC_BATCH_REFS_LIGHT(X)                                                                    \
@@ -19,10 +20,10 @@ SC_BATCH_REFS_LIGHT(SC_DECLARE_REF)
 void sc_batch_gen_brdf(uint64_t *rng, float *in);
 
 /* The parameters of the table's rows (the tests and the bench). */
-extern const sc_batch_atten_params sc_batch_test_atten;
-extern const sc_batch_spot_params sc_batch_test_spot;
+extern const sc_atten sc_batch_test_atten;
+extern const sc_spot sc_batch_test_spot;
 /* cook-torrance GGX, Smith height-correlated, Schlick: the model with the most terms (the
  * others are tested in tests/unit/test_batch_light.c) */
-extern const sc_batch_brdf_params sc_batch_test_brdf;
+extern const sc_brdf sc_batch_test_brdf;
 
 #endif

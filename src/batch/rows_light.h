@@ -6,7 +6,8 @@
 #define R_RANGE 0, 1000, 0, 0, NULL
 #define COS_RANGE -1, 1, 0, 0, NULL
 #define BRDF_DOM                                                                                   \
-    "l, v, n nonzero, |n.l|, |n.v| >= 2^-6 |n||l|, |n||v|; alpha >= 0.2, m <= 200, ior >= 1; "     \
+    "l, v, n nonzero, |n.l|, |n.v| >= 2^-6 |n||l|, |n||v|; alpha >= 0.2 (anisotropic Beckmann "    \
+    ">= 0.35), m <= 200, ior >= 1; "                                                               \
     "error relative, plus 2^-20 x scale"
 ROWS_P(atten_none, u1, 1, 1, 0.5, 0, 0, "all r", R_RANGE, 0, ATTEN_P)
 ROWS_P(atten_invsq, u2, 1, 1, 2, 0, 0, "0 <= r <= 1000", R_RANGE, 4, ATTEN_P)

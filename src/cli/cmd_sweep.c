@@ -49,6 +49,9 @@ static void usage(FILE *out)
             "      --n, --v, --p, --eye, --tangent X,Y,Z   the geometry, as for shade\n"
             "      --preset NAME        attenuation|spot|lobe|albedo: the lecture's figures\n"
             "  -p, --precision P        double|highp|mediump|lowp (default highp)\n"
+            "      --tier T             shading rows by the batch kernel's tier T (accurate|\n"
+            "                           bits12|bits8), the scene compiled once; default: the\n"
+            "                           scalar equation at -p\n"
             "  -f, --format F           csv|tsv|jsonl (default csv; jsonl: JSON Lines, one\n"
             "                           object per row, also called json)\n"
             "  -o, --output FILE        the table (default standard output; with --plot or\n"
@@ -87,6 +90,7 @@ enum {
     OPT_VAR,
     OPT_LOG,
     OPT_PRESET,
+    OPT_TIER,
     OPT_PLOT,
     OPT_POLAR,
     OPT_TITLE,
@@ -142,6 +146,7 @@ static int option_value(sweep_options *o, int c, const char *arg)
     case 'b': return add_item(o, 'b', "brdf", arg);
     case 'a': return add_item(o, 'a', "ambient", arg);
     case 's': o->setup.scene = arg; return SC_EXIT_OK;
+    case OPT_TIER: o->setup.tier = arg; return SC_EXIT_OK;
     case OPT_N:
     case OPT_V:
     case OPT_P:
@@ -243,6 +248,7 @@ static int parse_options(int argc, char **argv, sweep_options *o)
                                           {"eye", required_argument, NULL, OPT_EYE},
                                           {"tangent", required_argument, NULL, OPT_TANGENT},
                                           {"preset", required_argument, NULL, OPT_PRESET},
+                                          {"tier", required_argument, NULL, OPT_TIER},
                                           {"precision", required_argument, NULL, 'p'},
                                           {"format", required_argument, NULL, 'f'},
                                           {"output", required_argument, NULL, 'o'},
@@ -344,6 +350,11 @@ static int make_plan(sweep_options *o, const sc_sweep_grid *g, sweep_plan *plan)
         sc_error("sweep: EXPR '%s' is evaluated on its own: drop --light, --brdf, --scene and "
                  "the geometry options (or the EXPR)",
                  o->expr);
+        return SC_EXIT_USAGE;
+    }
+    if (o->expr && o->setup.tier) {
+        sc_error("sweep: --tier %s applies to shading sweeps (--light), not to an EXPR",
+                 o->setup.tier);
         return SC_EXIT_USAGE;
     }
     if (o->expr)

@@ -40,6 +40,7 @@ typedef struct {
 
 typedef struct {
     const char *scene; /* --scene FILE or NULL */
+    const char *tier;  /* --tier T (shading through a plan of the batch kernel) or NULL */
     sweep_item items[SWEEP_MAX_ITEMS];
     int n_items;
 } sweep_setup_args;

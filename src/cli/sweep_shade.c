@@ -19,6 +19,7 @@
 #include "cli/cli.h"
 #include "cli/setup.h"
 #include "cli/sweep_cli.h"
+#include "shadecalc/batch.h"
 
 enum { SPEC_MAX = 1024 };
 static const double radians_per_degree = 0.017453292519943295;
@@ -37,7 +38,8 @@ typedef struct {
 } worker_state;
 
 typedef struct {
-    shade_setup setup; /* row 1's values */
+    shade_setup setup;   /* row 1's values */
+    sc_batch_plan *plan; /* --tier: the scene compiled once for the batch kernel, or NULL */
     sc_shade_point at;
     sc_prec prec;
     int brdf_only;
@@ -138,6 +140,27 @@ static int update_specs(const shade_plan *s, worker_state *w, const double *vars
     return 0;
 }
 
+/* L_o at `at` by the plan (one element; float inputs): 1, or 0 where the kernel's float sums
+ * overflowed to NaN (0·inf), which sc_shade then computes, as render does. */
+static int shade_by_plan(const sc_batch_plan *plan, const sc_shade_point *at, double L[3])
+{
+    float in[9], out[3];
+    for (int c = 0; c < 3; c++) {
+        in[c] = (float)at->frame.n[c];
+        in[3 + c] = (float)at->v[c];
+        in[6 + c] = (float)at->pos[c];
+    }
+    const float *const ins[9] = {in,     in + 1, in + 2, in + 3, in + 4,
+                                 in + 5, in + 6, in + 7, in + 8};
+    float *const outs[3] = {out, out + 1, out + 2};
+    sc_batch_plan_shade(plan, ins, outs, 1);
+    if (isnan(out[0]) || isnan(out[1]) || isnan(out[2]))
+        return 0;
+    for (int c = 0; c < 3; c++)
+        L[c] = out[c];
+    return 1;
+}
+
 static int eval_row(void *user, int worker, const double *vars, double *results, char *err,
                     size_t errsize)
 {
@@ -161,6 +184,8 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
                       s->setup.n_lights,
                       w->model,
                       {s->setup.ambient[0], s->setup.ambient[1], s->setup.ambient[2]}};
+    if (s->plan && shade_by_plan(s->plan, &at, results))
+        return 0;
     sc_shade_result r = {.per_light = NULL};
     sc_shade(s->prec, &scene, &at, &r);
     memcpy(results, r.L, sizeof r.L);
@@ -170,6 +195,7 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
 static void destroy(void *user)
 {
     shade_plan *s = user;
+    sc_batch_plan_free(s->plan);
     for (int w = 0; s->workers && w < s->threads; w++)
         free(s->workers[w].last);
     free(s->workers);
@@ -225,6 +251,43 @@ static int check_angles(const shade_plan *s)
                  s->setup.model.kind == SC_MODEL_ADS      ? "ads"
                  : s->setup.model.kind == SC_MODEL_OPENGL ? "opengl"
                                                           : "direct3d9");
+        return SC_EXIT_USAGE;
+    }
+    return SC_EXIT_OK;
+}
+
+/* --tier: the scene compiled once, when one scene serves every row: highp, lights (not a BRDF
+ * alone), no $variables in the specs, no angle moving directional lights, no anisotropic
+ * roughness (whose frame the kernels build from n, not from --tangent). */
+static int compile_tier(shade_plan *s, const char *tier)
+{
+    const char *why = NULL;
+    const sc_brdf *b = &s->setup.model.brdf;
+    int directional = 0;
+    for (int k = 0; k < s->setup.n_lights; k++)
+        directional |= s->setup.lights[k].kind == SC_LIGHT_DIRECTIONAL;
+    if (s->prec != SC_HIGHP)
+        why = "the batch kernels compute highp";
+    else if (s->brdf_only)
+        why = "a BRDF without lights is f(l, v), not shading: give a --light";
+    else if (s->n_templates > 0)
+        why = "$variables in --light/--brdf change the scene from row to row";
+    else if (moves_l(s) && directional)
+        why = "theta_i/phi_i (or the half-vector angles) turn the directional lights row by row";
+    else if (b->ax != b->ay && (b->kind == SC_BRDF_WARD || b->kind == SC_BRDF_COOK_TORRANCE))
+        why = "the kernels build the anisotropic frame from n alone, not from --tangent";
+    if (why) {
+        sc_error("sweep: --tier %s: %s", tier, why);
+        return SC_EXIT_USAGE;
+    }
+    sc_scene scene = {s->setup.lights,
+                      s->setup.n_lights,
+                      s->setup.model,
+                      {s->setup.ambient[0], s->setup.ambient[1], s->setup.ambient[2]}};
+    char reason[256];
+    s->plan = sc_batch_plan_compile(&scene, tier, sc_isa_active(), reason, sizeof reason);
+    if (!s->plan) {
+        sc_error("sweep: --tier %s: the batch kernels do not cover this scene: %s", tier, reason);
         return SC_EXIT_USAGE;
     }
     return SC_EXIT_OK;
@@ -308,6 +371,8 @@ int sweep_shade_plan(const sweep_setup_args *a, const sc_sweep_grid *g, sc_prec 
         status = setup_check_range(&s->setup, p);
     if (status == SC_EXIT_OK)
         status = setup_point(&s->setup, &s->at);
+    if (status == SC_EXIT_OK && a->tier)
+        status = compile_tier(s, a->tier);
     if (status == SC_EXIT_OK && make_workers(s) < 0) {
         sc_error("sweep: out of memory");
         status = SC_EXIT_RUNTIME;

@@ -3,8 +3,9 @@
  *
  * Tiers (the enum of shade_impl.h): ACCURATE has sqrt and division rounded once and the u1
  * pow/exp (double lanes; the scalar built-ins in plain C); FAST12 the rsqrt/rcp estimates with
- * one Newton step and pow/exp_bits12. Every kernel computes the uniforms of its parameters once
- * per call (brdf_setup, atten_setup, spot_setup) and hands them to the lanes as args.params.
+ * one Newton step and pow/exp_bits12. Every kernel computes the float uniforms of its double
+ * parameters (sc_atten, sc_spot, sc_brdf) once per call (src/simd/uniforms.h) and hands them to
+ * the lanes as args.params.
  * The attenuation and spot functions are rational functions and one pow/exp: their fast tiers
  * keep the division (a fraction of a nanosecond) and change only pow and exp.
  */
@@ -28,7 +29,6 @@ static SC_INLINE vf light_exp(int tier, vf x)
 /* ---- one input, one output: attenuation of r and spot of cos θ_s ---- */
 
 typedef vf (*func_fn)(int tier, vf x, const func_uniforms *u);
-typedef void (*func_setup_fn)(const void *params, func_uniforms *u);
 
 static SC_INLINE void func_lane(int tier, func_fn f, const float *const *in, float *const *out,
                                 size_t i, const void *u)
@@ -44,58 +44,22 @@ static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_
     run_n(&b, k, m, lane);
 }
 
-#define FUNC_KERNEL(name, tier, f, setup)                                                          \
+/* setup: sc_uniforms_atten or sc_uniforms_spot, for the function's kind */
+#define FUNC_KERNEL(name, tier, f, setup, kind)                                                    \
     static SC_INLINE void name##_lane(const float *const *in, float *const *out, size_t i,         \
-                                      const sc_batch_scene *s, const void *u)                      \
+                                      const void *u)                                               \
     {                                                                                              \
-        (void)s;                                                                                   \
         func_lane(tier, f, in, out, i, u);                                                         \
     }                                                                                              \
     void K(name)(const sc_batch_args *a);                                                          \
     void K(name)(const sc_batch_args *a)                                                           \
     {                                                                                              \
         func_uniforms u;                                                                           \
-        setup(a->params, &u);                                                                      \
+        setup(a->params, kind, &u);                                                                \
         run_uniforms(a, 1, 1, name##_lane, &u);                                                    \
     }
 
 /* -- attenuation (docs/formulas.md §3; light.c): denominators at least 1e-4, so r = 0 is finite -- */
-
-/* k: sc sl sq | r_start r_end 1/(r_end − r_start) | f_c r_c s_e f_max k0 −k1 | 1/r_max */
-static inline void atten_setup_clq(const void *params, func_uniforms *u)
-{
-    const sc_batch_atten_params *p = params;
-    *u = (func_uniforms){{p->sc, p->sl, p->sq}};
-}
-
-static inline void atten_setup_window(const void *params, func_uniforms *u)
-{
-    const sc_batch_atten_params *p = params;
-    *u = (func_uniforms){{p->r_start, p->r_end, (float)((double)p->r_end - p->r_start)}};
-}
-
-/* pixar: k0 = ln(f_c/f_max), k1 = s_e/k0 in double, once (f_c = f_max: flat, k0 = 0) */
-static inline void atten_setup_pixar(const void *params, func_uniforms *u)
-{
-    const sc_batch_atten_params *p = params;
-    double k0 = log((double)p->f_c / p->f_max);
-    *u = (func_uniforms){
-        {p->f_c, p->r_c, p->s_e, p->f_max, (float)k0, k0 == 0.0 ? 0.0f : (float)(-p->s_e / k0)}};
-}
-
-/* k: r_max, r_max², 1/r_max^4 */
-static inline void atten_setup_windowed(const void *params, func_uniforms *u)
-{
-    const sc_batch_atten_params *p = params;
-    double r2 = (double)p->r_max * p->r_max;
-    *u = (func_uniforms){{p->r_max, (float)r2, (float)(1.0 / (r2 * r2))}};
-}
-
-static inline void no_setup(const void *params, func_uniforms *u)
-{
-    (void)params;
-    *u = (func_uniforms){{0}};
-}
 
 static SC_INLINE vf inverse_square(vf r)
 {
@@ -158,42 +122,41 @@ static SC_INLINE vf atten_windowed(int tier, vf r, const func_uniforms *u)
     return vf_mul(vf_mul(w, w), inverse_square(r));
 }
 
-FUNC_KERNEL(atten_none_u1, ACCURATE, atten_none, no_setup)
-FUNC_KERNEL(atten_invsq_u2, ACCURATE, atten_invsq, no_setup)
-FUNC_KERNEL(atten_clq_u3, ACCURATE, atten_clq, atten_setup_clq)
-FUNC_KERNEL(atten_window_u2, ACCURATE, atten_window, atten_setup_window)
-FUNC_KERNEL(atten_pixar_u4, ACCURATE, atten_pixar, atten_setup_pixar)
-FUNC_KERNEL(atten_pixar_bits12, FAST12, atten_pixar, atten_setup_pixar)
-FUNC_KERNEL(atten_windowed_u12, ACCURATE, atten_windowed, atten_setup_windowed)
+FUNC_KERNEL(atten_none_u1, ACCURATE, atten_none, sc_uniforms_atten, SC_ATTEN_NONE)
+FUNC_KERNEL(atten_invsq_u2, ACCURATE, atten_invsq, sc_uniforms_atten, SC_ATTEN_INVERSE_SQUARE)
+FUNC_KERNEL(atten_clq_u3, ACCURATE, atten_clq, sc_uniforms_atten, SC_ATTEN_CLQ)
+FUNC_KERNEL(atten_window_u2, ACCURATE, atten_window, sc_uniforms_atten, SC_ATTEN_WINDOW)
+FUNC_KERNEL(atten_pixar_u4, ACCURATE, atten_pixar, sc_uniforms_atten, SC_ATTEN_PIXAR)
+FUNC_KERNEL(atten_pixar_bits12, FAST12, atten_pixar, sc_uniforms_atten, SC_ATTEN_PIXAR)
+FUNC_KERNEL(atten_windowed_u12, ACCURATE, atten_windowed, sc_uniforms_atten, SC_ATTEN_WINDOWED)
 
 /* -- spot (docs/formulas.md §4): the functions and their setup are in src/simd/spot_impl.h, shared with
  * the shading kernel -- */
 
-FUNC_KERNEL(spot_opengl_u1, ACCURATE, spot_opengl, spot_setup_opengl)
-FUNC_KERNEL(spot_opengl_bits12, FAST12, spot_opengl, spot_setup_opengl)
-FUNC_KERNEL(spot_directx_u16, ACCURATE, spot_directx, spot_setup_penumbra)
-FUNC_KERNEL(spot_directx_bits12, FAST12, spot_directx, spot_setup_penumbra)
-FUNC_KERNEL(spot_smoothstep_u8, ACCURATE, spot_smoothstep, spot_setup_penumbra)
+FUNC_KERNEL(spot_opengl_u1, ACCURATE, spot_opengl, sc_uniforms_spot, SC_SPOT_OPENGL)
+FUNC_KERNEL(spot_opengl_bits12, FAST12, spot_opengl, sc_uniforms_spot, SC_SPOT_OPENGL)
+FUNC_KERNEL(spot_directx_u16, ACCURATE, spot_directx, sc_uniforms_spot, SC_SPOT_DIRECTX)
+FUNC_KERNEL(spot_directx_bits12, FAST12, spot_directx, sc_uniforms_spot, SC_SPOT_DIRECTX)
+FUNC_KERNEL(spot_smoothstep_u8, ACCURATE, spot_smoothstep, sc_uniforms_spot, SC_SPOT_SMOOTHSTEP)
 
-/* ---- BRDFs (docs/formulas.md §6, brdf.h): in l, v, n; out f (or f cos θ_i) as r, g, b ----
+/* ---- BRDFs (docs/formulas.md §6, brdf.h): in l, v, n; out f as r, g, b ----
  *
  * With n, l, v normalized and the unnormalized half vector h_u = l + v, the isotropic models
  * need only n·l, n·v, h_u·h_u, n·h_u and |n × h_u|² (= (h_u·h_u) sin²θ_h, without the
- * cancellation of 1 − cos²θ_h at the highlight). A model returns weights w_j with
- * f_c = Σ_j w_j col_j[c] for colour vectors fixed per call (brdf_setup). */
+ * cancellation of 1 − cos²θ_h at the highlight). Anisotropic Ward and Cook–Torrance need the
+ * tangent frame (t, b) too: the one sc_frame_make builds from n alone. A model returns weights
+ * w_j with f_c = Σ_j w_j col_j[c] for colour vectors fixed per call (sc_uniforms_brdf). */
 
 static const float pi_f = 3.14159265358979323846f;
 
-typedef struct {
-    float col[3][3]; /* f_c = w_0 col[0][c] + w_1 col[1][c] + w_2 col[2][c] */
-    float k[4];      /* the model's constants, named by brdf_setup */
-    float m, a2;     /* exponent; α² (α >= 1e-4) */
-    int form, cos, D, G, F;
-} brdf_uniforms;
+typedef sc_brdf_uniforms brdf_uniforms;
 
 typedef struct {
     v3 n, l, v;
     vf nl, nv, hh, hn, s2; /* n·l, n·v, h_u·h_u, n·h_u, |n × h_u|² */
+    /* anisotropic only: sl = (h_u·t/α_x)² + (h_u·b/α_y)², and for w = l, v: p_w = (w·t α_x)² +
+     * (w·b α_y)² (α²tan²θ_w cos²θ_w, Heitz 2014) */
+    vf sl, pl, pv;
 } brdf_geometry;
 
 typedef struct {
@@ -213,20 +176,68 @@ static SC_INLINE vf cross2(v3 a, v3 b) /* |a × b|² */
     return v3_dot(c, c);
 }
 
-static SC_INLINE brdf_geometry brdf_geometry_of(int tier, const float *const *in, size_t i)
+/* sc_frame_make's tangent for a unit n: e_x (e_y where |n_x| >= 0.9) made orthogonal to n */
+static SC_INLINE v3 tangent_of(int nt, v3 n)
 {
-    int nt = tier == FAST8 ? FAST12 : tier; /* the lobes multiply the directions' errors */
+    vm use_x = vf_lt(vf_abs(n.x), vf_set1(0.9f));
+    vf tn = vf_select(use_x, n.x, n.y), one = vf_set1(1.0f), zero = vf_set1(0.0f);
+    v3 t = {vf_sub(vf_select(use_x, one, zero), vf_mul(tn, n.x)),
+            vf_sub(vf_select(use_x, zero, one), vf_mul(tn, n.y)), vf_mul(vf_sub(zero, tn), n.z)};
+    return v3_normalize(nt, t);
+}
+
+/* (1 − c)(1 + c) = sin²θ, accurate near c = 1 */
+static SC_INLINE vf sin2_of(vf c)
+{
+    return vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c));
+}
+
+/* sl and p_w of brdf_geometry. With (w·t)² + (w·b)² = sin²θ_w for unit w, and (h_u·t)² +
+ * (h_u·b)² = |n × h_u|², each is written as the isotropic form of one α plus a positive
+ * multiple of one axis' square, so that no term cancels:
+ *   sl  = s2 / α_hi² + (1/α_lo² − 1/α_hi²) (h_u·e_lo)²
+ *   p_w = α_lo² sin²θ_w + (α_hi² − α_lo²) (w·e_hi)²
+ * where e_lo is the axis of the smaller α (t for α_x), e_hi the other. */
+static SC_INLINE void aniso_geometry(int nt, const brdf_uniforms *u, brdf_geometry *g)
+{
+    v3 t = tangent_of(nt, g->n), b = v3_cross(g->n, t);
+    int x_lo = u->ax <= u->ay;
+    v3 e_lo = x_lo ? t : b, e_hi = x_lo ? b : t;
+    float lo = x_lo ? u->ax : u->ay, hi = x_lo ? u->ay : u->ax;
+    float lo2 = lo * lo, hi2 = hi * hi;
+    vf h_lo = v3_dot(v3_add(g->l, g->v), e_lo), l_hi = v3_dot(g->l, e_hi);
+    vf v_hi = v3_dot(g->v, e_hi);
+    g->sl = vf_fma(vf_set1(1.0f / lo2 - 1.0f / hi2), vf_mul(h_lo, h_lo),
+                   vf_mul(g->s2, vf_set1(1.0f / hi2)));
+    vf d = vf_set1(hi2 - lo2), lo2v = vf_set1(lo2);
+    g->pl = vf_fma(d, vf_mul(l_hi, l_hi), vf_mul(lo2v, sin2_of(g->nl)));
+    g->pv = vf_fma(d, vf_mul(v_hi, v_hi), vf_mul(lo2v, sin2_of(g->nv)));
+}
+
+/* The geometry of unit n, l, v; nt the tier of the normalizations. */
+static SC_INLINE brdf_geometry brdf_geometry_make(int nt, const brdf_uniforms *u, v3 n, v3 l, v3 v)
+{
     brdf_geometry g;
-    g.l = v3_normalize(nt, v3_load(in, 0, i));
-    g.v = v3_normalize(nt, v3_load(in, 3, i));
-    g.n = v3_normalize(nt, v3_load(in, 6, i));
-    g.nl = v3_dot(g.n, g.l);
-    g.nv = v3_dot(g.n, g.v);
-    v3 hu = v3_add(g.l, g.v);
+    g.n = n, g.l = l, g.v = v;
+    g.nl = v3_dot(n, l);
+    g.nv = v3_dot(n, v);
+    v3 hu = v3_add(l, v);
     g.hh = v3_dot(hu, hu);
     g.hn = vf_add(g.nl, g.nv);
-    g.s2 = cross2(g.n, hu);
+    g.s2 = cross2(n, hu);
+    g.sl = g.pl = g.pv = vf_set1(0.0f);
+    if (u->aniso)
+        aniso_geometry(nt, u, &g);
     return g;
+}
+
+static SC_INLINE brdf_geometry brdf_geometry_of(int tier, const brdf_uniforms *u,
+                                                const float *const *in, size_t i)
+{
+    int nt = tier == FAST8 ? FAST12 : tier; /* the lobes multiply the directions' errors */
+    return brdf_geometry_make(nt, u, v3_normalize(nt, v3_load(in, 6, i)),
+                              v3_normalize(nt, v3_load(in, 0, i)),
+                              v3_normalize(nt, v3_load(in, 3, i)));
 }
 
 static SC_INLINE brdf_weights weights(vf w0, vf w1, vf w2) { return (brdf_weights){{w0, w1, w2}}; }
@@ -274,15 +285,19 @@ static SC_INLINE brdf_weights model_blinn_phong(int tier, const brdf_uniforms *u
     return weights(inv_pi_v(), vf_mul(lobe, vf_set1(u->k[0])), vf_set1(0.0f));
 }
 
-/* tan²θ_h / α² = |n × h_u|² / (α² (n·h_u)²): the exponent of Ward and Beckmann */
+/* tan²θ_h / α² = |n × h_u|² / (α² (n·h_u)²): the exponent of Ward and Beckmann; anisotropic
+ * [(h_u·t/α_x)² + (h_u·b/α_y)²] / (n·h_u)² */
 static SC_INLINE vf slope_exponent(int tier, const brdf_uniforms *u, const brdf_geometry *g)
 {
     vf hn2 = vf_mul(g->hn, g->hn);
+    if (u->aniso)
+        return vf_mul(g->sl, tier_rcp(tier, hn2));
     return vf_mul(g->s2, tier_rcp(tier, vf_mul(vf_set1(u->a2), hn2)));
 }
 
-/* Ward (docs/formulas.md §6.4), isotropic: E = exp(−tan²θ_h/α²) over 4π α² √(cos θ_i cos θ_o) (1992),
- * 4π α² cos θ_i cos θ_o (duer) or π α² (h_u·n)^4/(h_u·h_u) (gmd); k0 = 1/(4πα²) or 1/(πα²). */
+/* Ward (docs/formulas.md §6.4): E = exp(−slope_exponent) over 4π α_x α_y √(cos θ_i cos θ_o)
+ * (1992), 4π α_x α_y cos θ_i cos θ_o (duer) or π α_x α_y (h_u·n)^4/(h_u·h_u) (gmd); k0 =
+ * 1/(4π α_x α_y) or 1/(π α_x α_y). */
 static SC_INLINE brdf_weights model_ward(int tier, const brdf_uniforms *u, const brdf_geometry *g)
 {
     vf e = light_exp(tier, vf_sub(vf_set1(0.0f), slope_exponent(tier, u, g)));
@@ -363,11 +378,18 @@ static const float erfc_c[10] = {0.17087277f, -0.82215223f, 1.48851587f, -1.1352
                                  0.27886807f, -0.18628806f, 0.09678418f, 0.37409196f,
                                  1.00002368f, -1.26551223f};
 
-static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c)
+/* c = cos θ; p = (w·t α_x)² + (w·b α_y)² when anisotropic (α sin θ = √p) */
+static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c, vf p)
 {
-    vf s = tier_sqrt(
-        tier, vf_max(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)), vf_set1(FLT_MIN)));
-    vf a = vf_mul(c, tier_rcp(tier, vf_mul(vf_set1(u->k[0]), s))); /* k0 = α */
+    vf as;
+    if (u->aniso)
+        as = tier_sqrt(tier, vf_max(p, vf_set1(FLT_MIN)));
+    else
+        as = vf_mul(
+            vf_set1(u->k[0]), /* k0 = α */
+            tier_sqrt(tier, vf_max(vf_mul(vf_sub(vf_set1(1.0f), c), vf_add(vf_set1(1.0f), c)),
+                                   vf_set1(FLT_MIN))));
+    vf a = vf_mul(c, tier_rcp(tier, as));
     vf t = tier_rcp(tier, vf_fma(vf_set1(0.5f), a, vf_set1(1.0f)));
     vf erfc_scaled = vf_mul(t, light_exp(tier, poly(t, erfc_c, 10)));
     vf tail = tier_rcp(tier, vf_mul(a, vf_set1(1.7724538509055160273f)));
@@ -375,11 +397,16 @@ static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c)
     return vf_mul(vf_mul(vf_set1(0.5f), e), vf_sub(tail, erfc_scaled));
 }
 
-/* D with h unit: GGX α² (h_u·h_u)² / (π (|n×h_u|² + α² (n·h_u)²)²); Beckmann
- * exp(−tan²θ_h/α²) (h_u·h_u)² / (π α² (n·h_u)^4) */
+/* D with h unit: GGX α² (h_u·h_u)² / (π (|n×h_u|² + α² (n·h_u)²)²), anisotropic
+ * (h_u·h_u)² / (π α_x α_y (sl + (n·h_u)²)²); Beckmann exp(−slope_exponent) (h_u·h_u)² /
+ * (π α_x α_y (n·h_u)^4) */
 static SC_INLINE vf ndf(int tier, const brdf_uniforms *u, const brdf_geometry *g)
 {
     vf hh2 = vf_mul(g->hh, g->hh), hn2 = vf_mul(g->hn, g->hn);
+    if (u->D == SC_D_GGX && u->aniso) {
+        vf d = vf_add(g->sl, hn2);
+        return vf_mul(vf_mul(vf_set1(inv_pi_f / u->a2), hh2), tier_rcp(tier, vf_mul(d, d)));
+    }
     if (u->D == SC_D_GGX) {
         vf d = vf_fma(vf_set1(u->a2), hn2, g->s2);
         return vf_mul(vf_mul(vf_set1(u->a2 * inv_pi_f), hh2), tier_rcp(tier, vf_mul(d, d)));
@@ -388,7 +415,8 @@ static SC_INLINE vf ndf(int tier, const brdf_uniforms *u, const brdf_geometry *g
     return vf_mul(vf_mul(e, hh2), tier_rcp(tier, vf_mul(vf_set1(pi_f * u->a2), vf_mul(hn2, hn2))));
 }
 
-/* V = G / (4 cos θ_i cos θ_o). GGX Smith with q = √(cos² (1 − α²) + α²) = cos θ √(1 + α²tan²θ):
+/* V = G / (4 cos θ_i cos θ_o). GGX Smith with q = √(cos² (1 − α²) + α²) = cos θ √(1 + α²tan²θ)
+ * (anisotropic √(cos² + p)):
  * separable 1/((n·l + q_l)(n·v + q_v)), height-correlated 1/(2 (q_l n·v + q_v n·l)) (Heitz
  * 2014 eq. 99); v-cavity min(1, 4 (n·h_u) min(n·l, n·v) / (h_u·h_u)) / (4 n·l n·v). */
 static SC_INLINE vf visibility(int tier, const brdf_uniforms *u, const brdf_geometry *g)
@@ -400,16 +428,22 @@ static SC_INLINE vf visibility(int tier, const brdf_uniforms *u, const brdf_geom
         return vf_mul(G, tier_rcp(tier, four_cc));
     }
     if (u->D == SC_D_BECKMANN) {
-        vf ll = beckmann_lambda(tier, u, g->nl), lv = beckmann_lambda(tier, u, g->nv), den;
+        vf ll = beckmann_lambda(tier, u, g->nl, g->pl), lv = beckmann_lambda(tier, u, g->nv, g->pv);
+        vf den;
         if (u->G == SC_G_SMITH_CORRELATED)
             den = vf_add(vf_add(vf_set1(1.0f), ll), lv);
         else
             den = vf_mul(vf_add(vf_set1(1.0f), ll), vf_add(vf_set1(1.0f), lv));
         return tier_rcp(tier, vf_mul(den, four_cc));
     }
-    vf one_a2 = vf_set1(1.0f - u->a2), a2 = vf_set1(u->a2);
-    vf ql = tier_sqrt(tier, vf_fma(vf_mul(g->nl, g->nl), one_a2, a2));
-    vf qv = tier_sqrt(tier, vf_fma(vf_mul(g->nv, g->nv), one_a2, a2));
+    vf one_a2 = vf_set1(1.0f - u->a2), a2 = vf_set1(u->a2), ql, qv;
+    if (u->aniso) {
+        ql = tier_sqrt(tier, vf_fma(g->nl, g->nl, g->pl));
+        qv = tier_sqrt(tier, vf_fma(g->nv, g->nv, g->pv));
+    } else {
+        ql = tier_sqrt(tier, vf_fma(vf_mul(g->nl, g->nl), one_a2, a2));
+        qv = tier_sqrt(tier, vf_fma(vf_mul(g->nv, g->nv), one_a2, a2));
+    }
     if (u->G == SC_G_SMITH_CORRELATED)
         return tier_rcp(tier, vf_mul(vf_set1(2.0f), vf_fma(ql, g->nv, vf_mul(qv, g->nl))));
     return tier_rcp(tier, vf_mul(vf_add(g->nl, ql), vf_add(g->nv, qv)));
@@ -448,77 +482,41 @@ static SC_INLINE brdf_weights model_cook_torrance(int tier, const brdf_uniforms 
     return weights(inv_pi_v(), S, vf_set1(0.0f));
 }
 
-/* The colour vectors and constants of one call. */
-static inline void brdf_setup(sc_brdf_kind kind, const sc_batch_brdf_params *p, brdf_uniforms *u)
-{
-    float alpha = p->alpha > 1e-4f ? p->alpha : 1e-4f, s2 = p->sigma * p->sigma;
-    *u = (brdf_uniforms){.m = p->m,
-                         .a2 = alpha * alpha,
-                         .form = p->form,
-                         .cos = p->cos,
-                         .D = p->D,
-                         .G = p->G,
-                         .F = p->F};
-    for (int c = 0; c < 3; c++) {
-        u->col[0][c] = p->diff[c];
-        u->col[1][c] = kind == SC_BRDF_COOK_TORRANCE && p->F == SC_F_SCHLICK ? p->spec[c] * p->f0[c]
-                                                                             : p->spec[c];
-        u->col[2][c] = kind == SC_BRDF_OREN_NAYAR ? p->diff[c] * p->diff[c]
-                                                  : p->spec[c] * (1.0f - p->f0[c]);
-    }
-    switch (kind) {
-    case SC_BRDF_PHONG:
-        u->k[0] = p->form == SC_PHONG_NORMALIZED ? (p->m + 2.0f) / (2.0f * pi_f) : inv_pi_f;
-        break;
-    case SC_BRDF_BLINN_PHONG:
-        u->k[0] = p->form == SC_BLINN_PLAIN ? 1.0f : (p->m + 8.0f) / (8.0f * pi_f);
-        break;
-    case SC_BRDF_WARD:
-        u->k[0] = 1.0f / ((p->form == SC_WARD_GMD ? 1.0f : 4.0f) * pi_f * u->a2);
-        break;
-    case SC_BRDF_OREN_NAYAR:
-        u->k[0] = 1.0f - 0.5f * s2 / (s2 + 0.33f);
-        u->k[1] = 0.45f * s2 / (s2 + 0.09f);
-        u->k[2] = 0.125f * s2 / (s2 + 0.09f);
-        u->k[3] = 0.17f * inv_pi_f * (s2 / (s2 + 0.13f));
-        break;
-    case SC_BRDF_COOK_TORRANCE:
-        u->k[0] = alpha;
-        u->k[1] = p->ior;
-        u->k[2] = 1.0f / (p->ior * p->ior);
-        u->k[3] = p->form == SC_CT_1982 ? 4.0f : 1.0f;
-        break;
-    default: break;
-    }
-}
-
 typedef brdf_weights (*brdf_model_fn)(int tier, const brdf_uniforms *u, const brdf_geometry *g);
 
-/* f (or f cos θ_i) where n·l > 0 and n·v > 0, else 0; the model's terms are dropped in unlit
- * lanes, where they may be ∞ or NaN. */
+/* f_c = Σ_j w_j col_j[c] */
+static SC_INLINE v3 brdf_colour(const brdf_uniforms *u, brdf_weights w)
+{
+    vf f[3];
+    for (int c = 0; c < 3; c++) {
+        f[c] = vf_mul(w.w[0], vf_set1(u->col[0][c]));
+        f[c] = vf_fma(w.w[1], vf_set1(u->col[1][c]), f[c]);
+        f[c] = vf_fma(w.w[2], vf_set1(u->col[2][c]), f[c]);
+    }
+    return (v3){f[0], f[1], f[2]};
+}
+
+/* f where n·l > 0 and n·v > 0, else 0; the model's terms are dropped in unlit lanes, where
+ * they may be ∞ or NaN. */
 static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *const *in,
                                 float *const *out, size_t i, const brdf_uniforms *u)
 {
-    brdf_geometry g = brdf_geometry_of(tier, in, i);
+    brdf_geometry g = brdf_geometry_of(tier, u, in, i);
     vm lit = vm_and(vf_lt(vf_set1(0.0f), g.nl), vf_lt(vf_set1(0.0f), g.nv));
-    brdf_weights w = model(tier, u, &g);
-    vf scale = u->cos ? g.nl : vf_set1(1.0f);
-    for (int c = 0; c < 3; c++) {
-        vf f = vf_mul(w.w[0], vf_set1(u->col[0][c]));
-        f = vf_fma(w.w[1], vf_set1(u->col[1][c]), f);
-        f = vf_fma(w.w[2], vf_set1(u->col[2][c]), f);
-        vf_storeu(out[c] + i, vf_select(lit, vf_mul(f, scale), vf_set1(0.0f)));
-    }
+    v3 f = brdf_colour(u, model(tier, u, &g));
+    vf zero = vf_set1(0.0f);
+    v3_store((v3){vf_select(lit, f.x, zero), vf_select(lit, f.y, zero), vf_select(lit, f.z, zero)},
+             out, i);
 }
 
 #define BRDF_LANE(model, tier)                                                                     \
     static SC_INLINE void brdf_##model##_##tier(const float *const *in, float *const *out,         \
-                                                size_t i, const sc_batch_scene *s, const void *u)  \
+                                                size_t i, const void *u)                           \
     {                                                                                              \
-        (void)s;                                                                                   \
         brdf_lane(tier, model_##model, in, out, i, u);                                             \
     }
-/* One loop per model, chosen once per call (params.model), so that each is straight-line. */
+/* One loop per model, chosen once per call (the sc_brdf's kind), so that each is
+ * straight-line. */
 #define BRDF_KERNEL(name, tier)                                                                    \
     BRDF_LANE(lambert, tier)                                                                       \
     BRDF_LANE(phong, tier)                                                                         \
@@ -532,11 +530,9 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
         static const lane_n_fn lanes[] = {brdf_lambert_##tier,     brdf_phong_##tier,              \
                                           brdf_blinn_phong_##tier, brdf_ward_##tier,               \
                                           brdf_oren_nayar_##tier,  brdf_cook_torrance_##tier};     \
-        const sc_batch_brdf_params *p = a->params;                                                 \
-        int model = p->model >= 0 && p->model <= SC_BRDF_COOK_TORRANCE ? p->model : 0;             \
         brdf_uniforms u;                                                                           \
-        brdf_setup((sc_brdf_kind)model, p, &u);                                                    \
-        run_uniforms(a, 9, 3, lanes[model], &u);                                                   \
+        sc_uniforms_brdf(a->params, &u);                                                           \
+        run_uniforms(a, 9, 3, lanes[u.model], &u);                                                 \
     }
 BRDF_KERNEL(brdf_bits16, ACCURATE)
 BRDF_KERNEL(brdf_bits12, FAST12)

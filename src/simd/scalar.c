@@ -6,6 +6,7 @@
 #include "simd/shade_impl.h"
 #include "simd/trig_impl.h"
 #include "simd/light_impl.h"
+#include "simd/scene_impl.h"
 
 BATCH1(exp2_u1, sc_exp2f)
 BATCH1(exp_u1, sc_expf)

@@ -1,5 +1,6 @@
-/* The vec3 and shading batch kernels, written once against the vector helpers and included
- * after src/simd/kernels_impl.h by each instruction set's file.
+/* The vec3 batch kernels and the tier operations of the shading, light and BRDF kernels, written
+ * once against the vector helpers and included after src/simd/kernels_impl.h by each
+ * instruction set's file (the shading kernel itself: src/simd/scene_impl.h).
  *
  * Tiers differ only in the few operations below (tier_rsqrt, tier_rcp, tier_sqrt, tier_pow):
  *   ACCURATE  sqrt and division rounded once; pow as the u1 kernel (double lanes)
@@ -18,8 +19,7 @@ enum { MAX_IN = 9, MAX_OUT = 3 };
 
 /* A lane function loads its inputs in[j] + i and stores its outputs out[j] + i itself, with
  * constant j: straight-line code, no copies. params is args.params (the light kernels). */
-typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i,
-                          const sc_batch_scene *scene, const void *params);
+typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i, const void *params);
 
 static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 {
@@ -31,7 +31,7 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
     memcpy(outs, a->out, sizeof outs);
     size_t i = 0, n = a->n;
     for (; i + VW <= n; i += VW)
-        f(ins, outs, i, a->scene, a->params);
+        f(ins, outs, i, a->params);
     if (i == a->n)
         return;
     float tail_in[MAX_IN][VW], tail_out[MAX_OUT][VW]; /* the tail, padded with 1 */
@@ -43,7 +43,7 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
     }
     for (int j = 0; j < m; j++)
         out[j] = tail_out[j];
-    f(in, out, 0, a->scene, a->params);
+    f(in, out, 0, a->params);
     for (int j = 0; j < m; j++)
         store_partial(a->out[j] + i, vf_loadu(tail_out[j]), a->n - i);
 }
@@ -195,18 +195,17 @@ static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
 
 static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
 
-static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i,
-                               const sc_batch_scene *s, const void *p)
+static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i, const void *p)
 {
-    (void)s, (void)p;
+    (void)p;
     vf_storeu(out[0] + i, v3_dot(v3_load(in, 0, i), v3_load(in, 3, i)));
 }
 
 /* reflect(I, N) = I − 2 (N·I) N (GLSL ES; N unit) */
 static SC_INLINE void reflect_lane(const float *const *in, float *const *out, size_t e,
-                                   const sc_batch_scene *s, const void *p)
+                                   const void *p)
 {
-    (void)s, (void)p;
+    (void)p;
     v3 i = v3_load(in, 0, e), n = v3_load(in, 3, e);
     vf k = vf_mul(vf_set1(-2.0f), v3_dot(n, i));
     v3_store((v3){vf_fma(k, n.x, i.x), vf_fma(k, n.y, i.y), vf_fma(k, n.z, i.z)}, out, e);
@@ -214,18 +213,17 @@ static SC_INLINE void reflect_lane(const float *const *in, float *const *out, si
 
 /* |a|: one square root, rounded once (the rsqrt tiers were slower and less accurate) */
 static SC_INLINE void length_lane(const float *const *in, float *const *out, size_t i,
-                                  const sc_batch_scene *s, const void *p)
+                                  const void *p)
 {
-    (void)s, (void)p;
+    (void)p;
     v3 a = v3_load(in, 0, i);
     vf_storeu(out[0] + i, vf_sqrt(v3_dot(a, a)));
 }
 
 #define TIERED_LANE(name, body_fn, tier)                                                           \
-    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,                \
-                               const sc_batch_scene *s, const void *p)                             \
+    static SC_INLINE void name(const float *const *in, float *const *out, size_t i, const void *p) \
     {                                                                                              \
-        (void)s, (void)p;                                                                          \
+        (void)p;                                                                                   \
         body_fn(tier, in, out, i);                                                                 \
     }
 
@@ -242,140 +240,4 @@ BATCH_N(normalize_u3, 3, 3, normalize_refined)
 BATCH_N(normalize_bits11, 3, 3, normalize_f8)
 BATCH_N(length_u2, 3, 1, length_lane)
 
-/* ---- the shading equation (docs/formulas.md §6): L = c_amb ⊙ L_A + Σ f(l, v) ⊙ E_L cos θ_i ---- */
-
 static const float inv_pi_f = 0.318309886183790671538f;
-
-/* What a shading call computes once from its scene: each spot light's uniforms, and the lobe
- * exponent when it is an integer small enough for pow_int (else 0) with its flush cutoff. */
-typedef struct {
-    func_uniforms spots[SC_BATCH_MAX_LIGHTS];
-    unsigned lobe_m;
-    float lobe_cutoff;
-} shade_uniforms;
-
-/* The specular part of f for one light (n, v unit; l unit), 0 for Lambert. nt is the tier of
- * the normalizations. */
-static SC_INLINE vf specular(int tier, int nt, sc_batch_brdf brdf, const sc_batch_scene *s,
-                             const shade_uniforms *u, v3 n, v3 v, v3 l, vf nl, vf nv)
-{
-    v3 h = v3_add(l, v);
-    vf inv_h = tier_rsqrt(nt, vf_max(v3_dot(h, h), vf_set1(FLT_MIN))); /* l = −v: h = 0 */
-    /* n·h floored at 2^-40, not at 0: its square (GGX) must not underflow (a microcode assist) */
-    vf nh = vf_max(vf_mul(v3_dot(n, h), inv_h), vf_set1(0x1p-40f));
-    if (brdf == SC_BATCH_BLINN_PHONG) { /* (m+8)/(8π) (n·h)^m: RTR3 §7.6 */
-        vf lobe = u->lobe_m ? pow_int(nh, u->lobe_m, vf_set1(u->lobe_cutoff))
-                            : tier_pow(tier, nh, vf_set1(s->m));
-        return vf_mul(vf_set1((s->m + 8.0f) * (inv_pi_f / 8.0f)), lobe);
-    }
-    /* GGX D = α² / (π (n·h² (α² − 1) + 1)²); V = G2/(4 n·l n·v) for Smith height-correlated
-     * = 1 / (2 (n·l √(n·v² (1 − α²) + α²) + n·v √(n·l² (1 − α²) + α²))) (Heitz 2014 eq. 99);
-     * F = F0 + (1 − F0)(1 − v·h)^5 (Schlick 1994). */
-    vf a2 = vf_set1(s->alpha * s->alpha), one_a2 = vf_set1(1.0f - s->alpha * s->alpha);
-    vf d = vf_fma(vf_mul(nh, nh), vf_sub(a2, vf_set1(1.0f)), vf_set1(1.0f));
-    vf D = vf_mul(vf_mul(a2, vf_set1(inv_pi_f)), tier_rcp(tier, vf_mul(d, d)));
-    vf gv = vf_mul(nl, tier_sqrt(tier, vf_fma(vf_mul(nv, nv), one_a2, a2)));
-    vf gl = vf_mul(nv, tier_sqrt(tier, vf_fma(vf_mul(nl, nl), one_a2, a2)));
-    vf V = tier_rcp(tier, vf_mul(vf_set1(2.0f), vf_add(gv, gl)));
-    vf vh = vf_max(vf_mul(v3_dot(v, h), inv_h), vf_set1(0.0f));
-    vf c = vf_sub(vf_set1(1.0f), vh); /* below 2^-24, c^5 (< 2^-120) would turn subnormal */
-    c = vf_select(vf_lt(c, vf_set1(0x1p-24f)), vf_set1(0.0f), c);
-    vf c2 = vf_mul(c, c);
-    vf F = vf_fma(vf_set1(1.0f - s->f0), vf_mul(vf_mul(c2, c2), c), vf_set1(s->f0));
-    return vf_mul(vf_mul(D, V), F);
-}
-
-/* Direction to light k and its irradiance factor: 1 (directional), or I_L / max(r², 10^-4)
- * times the spot factor (spot: its uniforms); at the light itself (r = 0) l = n, as light.h
- * has it. */
-static SC_INLINE v3 light_dir(int tier, int nt, const sc_batch_light *lt, const func_uniforms *spot,
-                              v3 n, const float *const *in, size_t i, vf *falloff)
-{
-    if (lt->kind == SC_BATCH_DIRECTIONAL) {
-        *falloff = vf_set1(1.0f);
-        return v3_set1(lt->dir);
-    }
-    v3 d = v3_sub(v3_set1(lt->pos), v3_load(in, 6, i));
-    vf r2 = v3_dot(d, d);
-    *falloff = tier_rcp(tier, vf_min(vf_max(r2, vf_set1(1e-4f)), vf_set1(FLT_MAX)));
-    v3 l = v3_normalize_dd(nt, d, r2);
-    vm at_light = vf_eq(r2, vf_set1(0.0f));
-    l = (v3){vf_select(at_light, n.x, l.x), vf_select(at_light, n.y, l.y),
-             vf_select(at_light, n.z, l.z)};
-    if (lt->kind == SC_BATCH_SPOT) {
-        vf cos_s = vf_sub(vf_set1(0.0f), v3_dot(l, v3_set1(lt->dir)));
-        *falloff = vf_mul(*falloff, spot_factor(tier, lt->spot, cos_s, spot));
-    }
-    return l;
-}
-
-/* The shading equation for one vector of elements; brdf is a constant at each call (one loop
- * per BRDF, chosen once per call), so that the lobe is straight-line code. Colours are v3
- * (x, y, z = r, g, b). */
-static SC_INLINE void shade_tier(int tier, sc_batch_brdf brdf, const float *const *in,
-                                 float *const *out, size_t i, const sc_batch_scene *s,
-                                 const shade_uniforms *u)
-{
-    int nt = tier == FAST8 ? FAST12 : tier;
-    v3 n = v3_normalize(nt, v3_load(in, 0, i)), v = v3_normalize(nt, v3_load(in, 3, i));
-    vf nv = v3_dot(n, v);
-    const float diff_pi[3] = {s->diff[0] * inv_pi_f, s->diff[1] * inv_pi_f, s->diff[2] * inv_pi_f};
-    v3 acc = v3_set1(s->amb_term), kd = v3_set1(diff_pi), ks = v3_set1(s->spec);
-    for (int k = 0; k < s->n_lights; k++) {
-        const sc_batch_light *lt = &s->lights[k];
-        vf falloff;
-        v3 l = light_dir(tier, nt, lt, &u->spots[k], n, in, i, &falloff);
-        vf nl = v3_dot(n, l);
-        vm lit = vm_and(vf_lt(vf_set1(0.0f), nl), vf_lt(vf_set1(0.0f), nv));
-        vf w = vf_select(lit, vf_mul(nl, falloff), vf_set1(0.0f)); /* cos θ_i · falloff */
-        v3 f = kd;
-        if (brdf != SC_BATCH_LAMBERT) { /* unlit lanes drop the lobe: it may be ∞ or NaN there */
-            vf sp = vf_select(lit, specular(tier, nt, brdf, s, u, n, v, l, nl, nv), vf_set1(0.0f));
-            f = (v3){vf_fma(ks.x, sp, kd.x), vf_fma(ks.y, sp, kd.y), vf_fma(ks.z, sp, kd.z)};
-        }
-        v3 e = v3_scale(v3_set1(lt->color), w);
-        acc = (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
-    }
-    v3_store(acc, out, i);
-}
-
-/* The arguments with, as params, the call's shade_uniforms. */
-static inline sc_batch_args with_shade_uniforms(const sc_batch_args *a, int tier, shade_uniforms *u)
-{
-    const sc_batch_scene *s = a->scene;
-    for (int k = 0; k < s->n_lights && k < SC_BATCH_MAX_LIGHTS; k++)
-        if (s->lights[k].kind == SC_BATCH_SPOT)
-            spot_uniforms_of_light(&s->lights[k], &u->spots[k]);
-    float most = tier == ACCURATE ? POW_INT_MAX_ACCURATE : POW_INT_MAX_FAST;
-    int integer = s->m >= 1.0f && s->m <= most && s->m == (float)(int)s->m;
-    u->lobe_m = integer ? (unsigned)s->m : 0u;
-    u->lobe_cutoff = integer ? (float)exp2(-100.0 / s->m) : 0.0f;
-    sc_batch_args b = *a;
-    b.params = u;
-    return b;
-}
-
-#define SHADE_LANE(name, tier, brdf)                                                               \
-    static SC_INLINE void name(const float *const *in, float *const *out, size_t i,                \
-                               const sc_batch_scene *s, const void *u)                             \
-    {                                                                                              \
-        shade_tier(tier, brdf, in, out, i, s, u);                                                  \
-    }
-#define SHADE_KERNEL(name, tier)                                                                   \
-    SHADE_LANE(name##_lambert, tier, SC_BATCH_LAMBERT)                                             \
-    SHADE_LANE(name##_blinn, tier, SC_BATCH_BLINN_PHONG)                                           \
-    SHADE_LANE(name##_ggx, tier, SC_BATCH_GGX)                                                     \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a)                                                           \
-    {                                                                                              \
-        shade_uniforms u;                                                                          \
-        sc_batch_args b = with_shade_uniforms(a, tier, &u);                                        \
-        switch (a->scene->brdf) {                                                                  \
-        case SC_BATCH_LAMBERT: run_n(&b, 9, 3, name##_lambert); break;                             \
-        case SC_BATCH_BLINN_PHONG: run_n(&b, 9, 3, name##_blinn); break;                           \
-        default: run_n(&b, 9, 3, name##_ggx); break;                                               \
-        }                                                                                          \
-    }
-SHADE_KERNEL(shade_accurate, ACCURATE)
-SHADE_KERNEL(shade_bits12, FAST12)
-SHADE_KERNEL(shade_bits8, FAST8)

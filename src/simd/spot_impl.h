@@ -1,11 +1,8 @@
 /* The spot functions of docs/formulas.md §4 (light.c), written once against the vector helpers: the
- * spot_* batch kernels of src/simd/light_impl.h and the shading kernel of src/simd/shade_impl.h
- * (which includes this file after its tier operations) both evaluate them. Each function reads
- * its uniforms, fixed once per call, from a func_uniforms:
- *   spot_setup_opengl, spot_setup_penumbra   from sc_batch_spot_params (angles in degrees)
- *   spot_uniforms_of_light                   from an sc_batch_light (cosines)
- * The cone's cosines from degrees are rounded toward the inside of each test, so that
- * cos θ_s >= cos θ_p and cos θ_s <= cos θ_u decide as in double. */
+ * spot_* batch kernels of src/simd/light_impl.h and the shading kernel of src/simd/scene_impl.h
+ * both evaluate them. Each function reads its uniforms, fixed once per call or per plan, from
+ * the sc_func_uniforms that sc_uniforms_spot (src/simd/uniforms.h) computes from an sc_spot. */
+#include "simd/uniforms.h"
 
 /* pow by tier; the u1 one hands NaN, infinities, zeros and 1 to the built-in */
 static SC_INLINE vf light_pow(int tier, vf x, vf y)
@@ -24,43 +21,7 @@ static SC_INLINE vf vf_clamp(vf x, float lo, float hi)
     return vf_min(vf_max(x, vf_set1(lo)), vf_set1(hi));
 }
 
-enum { MAX_UNIFORMS = 6 };
-typedef struct {
-    float k[MAX_UNIFORMS]; /* named by each function's setup */
-} func_uniforms;
-
-static const double deg = 3.14159265358979323846 / 180.0;
-
-static float float_at_least(double x) /* the least float >= x */
-{
-    float f = (float)x;
-    return (double)f < x ? nextafterf(f, INFINITY) : f;
-}
-
-static float float_at_most(double x)
-{
-    float f = (float)x;
-    return (double)f > x ? nextafterf(f, -INFINITY) : f;
-}
-
-/* k: cos θ_u (at least), exponent, 1 for no cone */
-static inline void spot_setup_opengl(const void *params, func_uniforms *u)
-{
-    const sc_batch_spot_params *p = params;
-    *u = (func_uniforms){
-        {float_at_least(cos(p->cutoff * deg)), p->exponent, p->cutoff == 180.0f ? 1.0f : 0.0f}};
-}
-
-/* k: cos θ_p (at least), cos θ_u (at most) as hi + lo, 1/(cos θ_p − cos θ_u), exponent: the
- * ramp (cos θ_s − cos θ_u)/(cos θ_p − cos θ_u) keeps its relative accuracy near the edge */
-static inline void spot_setup_penumbra(const void *params, func_uniforms *u)
-{
-    const sc_batch_spot_params *p = params;
-    double cp = cos(p->inner * deg), cu = cos(p->outer * deg);
-    float cu_hi = float_at_most(cu);
-    *u = (func_uniforms){{float_at_least(cp), cu_hi, (float)(cu - cu_hi),
-                          cp > cu ? (float)(1.0 / (cp - cu)) : 0.0f, p->exponent}};
-}
+typedef sc_func_uniforms func_uniforms;
 
 /* x^e for x <= 1 with pow(0, 0) = 1 and 0 for x <= 0 (the cosine lobes, light.c lobe_pow);
  * the lanes x <= 0 and x = 1 (the ramp's clamp inside the inner cone) take the base 1/2, which
@@ -108,23 +69,11 @@ static SC_INLINE vf spot_smoothstep(int tier, vf c, const func_uniforms *u)
     return penumbra(c, u, vf_mul(vf_mul(t, t), vf_fma(vf_set1(-2.0f), t, vf_set1(3.0f))));
 }
 
-/* The uniforms of a spot light of the shading kernel (batch.h: cosines of the half-angles). */
-static inline void spot_uniforms_of_light(const sc_batch_light *lt, func_uniforms *u)
-{
-    if (lt->spot == SC_BATCH_SPOT_OPENGL) {
-        *u = (func_uniforms){{lt->cos_outer, lt->exponent, lt->cos_outer <= -1.0f ? 1.0f : 0.0f}};
-        return;
-    }
-    double cp = lt->cos_inner, cu = lt->cos_outer;
-    *u = (func_uniforms){{lt->cos_inner, lt->cos_outer, 0.0f,
-                          cp > cu ? (float)(1.0 / (cp - cu)) : 0.0f, lt->exponent}};
-}
-
-static SC_INLINE vf spot_factor(int tier, sc_batch_spot kind, vf cos_s, const func_uniforms *u)
+static SC_INLINE vf spot_factor(int tier, sc_spot_kind kind, vf cos_s, const func_uniforms *u)
 {
     switch (kind) {
-    case SC_BATCH_SPOT_DIRECTX: return spot_directx(tier, cos_s, u);
-    case SC_BATCH_SPOT_SMOOTHSTEP: return spot_smoothstep(tier, cos_s, u);
+    case SC_SPOT_DIRECTX: return spot_directx(tier, cos_s, u);
+    case SC_SPOT_SMOOTHSTEP: return spot_smoothstep(tier, cos_s, u);
     default: return spot_opengl(tier, cos_s, u);
     }
 }

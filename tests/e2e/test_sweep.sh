@@ -192,3 +192,25 @@ expect "help"               0 '~usage: shadecalc sweep' '' -- sweep --help
 # row 1 at l = v = n: 0.8/π + F0/(4πα²) = 0.57295780 (GGX D = 1/(πα²), G = 1)
 expect "row beyond highp" 2 'a,r,g,b
 0.1,0.57295775,0.57295775,0.57295775' "error: sweep: row 2: 'cook-torrance alpha=1e+39': alpha=1e+39: beyond the highp range (|x| <= 3.4028235e+38)" -- sweep --var a=0.1,1e39 --light 'directional dir=0,0,1' --brdf 'cook-torrance alpha=$a'
+
+# --tier: shading rows by a plan of the batch kernel, within the tier's bound of the double path
+# rows of numbers (CSV) within relative tolerance TOL of the reference rows
+rows_within() {
+    printf '%s\n' "$1" >"$e2e_tmp/want.csv"
+    printf '%s\n' "$2" >"$e2e_tmp/got.csv"
+    paste -d, "$e2e_tmp/want.csv" "$e2e_tmp/got.csv" | awk -F, -v tol="$3" '
+        { n = NF / 2; for (i = 1; i <= n; i++) { d = $i - $(i + n); a = $i
+          if (d < 0) d = -d; if (a < 0) a = -a; if (d > tol * a) bad = 1 } }
+        END { exit bad }'
+}
+tier_run() { "$SHADECALC" sweep --var theta_o=0:80:9 --light 'point pos=0,1,3 I=10' --light 'spot pos=1,0,3 dir=0,0,-1 I=20 spot=smoothstep inner=20 outer=50' --brdf 'ward ax=0.3 ay=0.3 spec=0.3' "$@" | tail -n +2; }
+tier_ref=$(tier_run -p double)
+verdict "tier bits12 near double"   rows_within "$tier_ref" "$(tier_run --tier bits12)" 5e-4
+verdict "tier accurate near double" rows_within "$tier_ref" "$(tier_run --tier accurate)" 1e-5
+verdict "tier rows differ from highp" test "$(tier_run --tier bits12)" != "$(tier_run)"
+expect "tier: one scene"   2 '' 'error: sweep: --tier bits12: $variables in --light/--brdf change the scene from row to row' -- sweep --var m=1:3:3 --light 'point pos=0,0,3 I=10' --brdf 'blinn-phong m=$m' --tier bits12
+expect "tier: moving l"    2 '' 'error: sweep: --tier bits8: theta_i/phi_i (or the half-vector angles) turn the directional lights row by row' -- sweep --var theta_i=0:80:3 --light 'directional dir=0,0,1' --tier bits8
+expect "tier: highp"       2 '' 'error: sweep: --tier bits8: the batch kernels compute highp' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' -p mediump --tier bits8
+expect "tier: legacy"      2 '' '~model ads: the legacy fixed-function models are not covered' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' --brdf ads --tier bits8
+expect "tier: not an EXPR" 2 '' 'error: sweep: --tier bits8 applies to shading sweeps (--light), not to an EXPR' -- sweep --var x=0:1:3 'x*x' --tier bits8
+expect "tier: unknown"     2 '' '~tier u9: the shading kernel'"'"'s tiers are accurate, bits12, bits8' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' --tier u9

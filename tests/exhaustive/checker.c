@@ -199,7 +199,7 @@ static int check_one(const exh_subject *s, int audit, float x, float y, float go
 static void evaluate(const exh_subject *s, const float *x, const float *y, float *out, size_t n)
 {
     if (s->entry) {
-        sc_batch_args a = {{0}, {out}, n, NULL, s->entry->params};
+        sc_batch_args a = {{0}, {out}, n, s->entry->params};
         /* a subject's (x, y) are its first and second arguments: atan2's (y, x) */
         a.in[0] = x;
         a.in[1] = y;

@@ -21,6 +21,9 @@
 #include "shadecalc/batch.h"
 #include "shadecalc/precision.h"
 
+#include "batch/reference.h"
+#include "batch/reference_light.h"
+
 #if defined(__SANITIZE_ADDRESS__)
 #define SANITIZED 1
 #elif defined(__has_feature)
@@ -58,15 +61,72 @@ static uint64_t next(void)
     return rng;
 }
 
-/* The scene every shading entry is tested with: all three BRDFs in turn would triple the time,
- * so the lobe with the most terms (ggx), one directional, one point and three spot lights (of
- * the three kinds); blinn-phong and lambert get the compare-with-scalar test below. */
-static sc_batch_scene scenes[3];
+/* The scene every shading entry is tested with: all BRDFs in turn would multiply the time, so
+ * the kernel's own lobe with the most terms (ggx), one directional, one point and three spot
+ * lights (of the three kinds); the others get the compare-with-scalar test below: lambert,
+ * blinn-phong, and anisotropic Ward and Cook-Torrance (Beckmann) through the BRDF kernel's
+ * models. The shade rows' params is a plan of the scene (any tier: the row has its own). */
+enum { N_SCENES = 5, GGX_SCENE = 2 };
+static sc_light scene_lights[N_SCENES][SC_BATCH_MAX_LIGHTS];
+static sc_scene scenes[N_SCENES];
+static sc_batch_plan *plans[N_SCENES];
+
+/* The BRDF kernel's parameters besides the table's (isotropic GGX): anisotropic ones. */
+enum { N_BRDFS = 3 };
+static sc_brdf brdfs[N_BRDFS];
+
+/* b as an anisotropic model of kind (form 0: ward 1992, cook-torrance walter), colours kept */
+static void anisotropic(sc_brdf *b, sc_brdf_kind kind, sc_ndf D)
+{
+    b->kind = kind;
+    b->form = 0;
+    b->D = D;
+    b->G = SC_G_SMITH;
+    b->ax = 0.25;
+    b->ay = 0.6;
+}
 
 static void make_scenes(void)
 {
-    for (int b = 0; b < 3; b++)
-        sc_batch_scene_example((sc_batch_brdf)b, 1, 1, 3, &scenes[b]);
+    static const sc_brdf_kind kinds[N_SCENES] = {SC_BRDF_LAMBERT, SC_BRDF_BLINN_PHONG,
+                                                 SC_BRDF_COOK_TORRANCE, SC_BRDF_WARD,
+                                                 SC_BRDF_COOK_TORRANCE};
+    for (int b = 0; b < N_SCENES; b++) {
+        char why[256];
+        sc_batch_example_scene(kinds[b], 1, 1, 3, scene_lights[b], &scenes[b]);
+        if (b > GGX_SCENE)
+            anisotropic(&scenes[b].model.brdf, kinds[b], SC_D_BECKMANN);
+        plans[b] = sc_batch_plan_compile(&scenes[b], "accurate", SC_ISA_SCALAR, why, sizeof why);
+        if (!plans[b]) {
+            fprintf(stderr, "scene %d: %s\n", b, why);
+            exit(1);
+        }
+    }
+    for (int b = 0; b < N_BRDFS; b++)
+        brdfs[b] = sc_batch_test_brdf;
+    anisotropic(&brdfs[1], SC_BRDF_WARD, SC_D_GGX);
+    anisotropic(&brdfs[2], SC_BRDF_COOK_TORRANCE, SC_D_GGX);
+}
+
+static void free_scenes(void)
+{
+    for (int b = 0; b < N_SCENES; b++)
+        sc_batch_plan_free(plans[b]);
+}
+
+/* The parameters e runs with in the compare-with-scalar test: k < params_count(e). */
+static int params_count(const sc_batch_entry *e)
+{
+    return strcmp(e->kernel, "shade") == 0  ? N_SCENES
+           : strcmp(e->kernel, "brdf") == 0 ? N_BRDFS
+                                            : 1;
+}
+
+static const void *params_of(const sc_batch_entry *e, int k)
+{
+    if (strcmp(e->kernel, "shade") == 0)
+        return plans[k];
+    return strcmp(e->kernel, "brdf") == 0 ? (const void *)&brdfs[k] : e->params;
 }
 
 /* n elements of e's inputs, and output arrays, as sc_batch_args. */
@@ -75,7 +135,7 @@ typedef struct {
     sc_batch_args args;
 } buffers;
 
-static void buffers_init(buffers *b, const sc_batch_entry *e, size_t n, const sc_batch_scene *s)
+static void buffers_init(buffers *b, const sc_batch_entry *e, size_t n, const void *params)
 {
     memset(b, 0, sizeof *b);
     for (int j = 0; j < e->n_in; j++) {
@@ -89,8 +149,7 @@ static void buffers_init(buffers *b, const sc_batch_entry *e, size_t n, const sc
         b->args.out[j] = b->out[j];
     }
     b->args.n = n;
-    b->args.scene = s;
-    b->args.params = e->params;
+    b->args.params = params;
 }
 
 static void buffers_free(buffers *b)
@@ -128,9 +187,9 @@ static void describe(const sc_batch_entry *e, const sc_batch_args *a, size_t i, 
                         (double)a->out[j][i]);
 }
 
-static const sc_batch_scene *scene_for(const sc_batch_entry *e)
+static const void *params_for(const sc_batch_entry *e)
 {
-    return strcmp(e->kernel, "shade") == 0 ? &scenes[SC_BATCH_GGX] : NULL;
+    return strcmp(e->kernel, "shade") == 0 ? plans[GGX_SCENE] : e->params;
 }
 
 /* Entries that draw their inputs from the same domain share inputs and reference values. */
@@ -166,7 +225,7 @@ static void check_entry(const sc_batch_entry *e, buffers *b, size_t n, const dou
 static void check_domain(const sc_batch_entry *first, size_t n)
 {
     buffers b;
-    buffers_init(&b, first, n, scene_for(first));
+    buffers_init(&b, first, n, params_for(first));
     double *ref = malloc(n * 4 * sizeof *ref);
     assert_non_null(ref);
     for (size_t i = 0; i < n; i++)
@@ -230,12 +289,12 @@ static int in_domain(const sc_batch_entry *e, const float *v)
 /* Runs e and its scalar twin on n elements starting `offset` floats into the buffers, the
  * test values v placed at `lane`, random data elsewhere, and compares. */
 static void compare_with_scalar(const sc_batch_entry *e, const sc_batch_entry *s,
-                                const sc_batch_scene *scene, size_t n, size_t offset, size_t lane,
+                                const void *params, size_t n, size_t offset, size_t lane,
                                 const float *v)
 {
     buffers b1, b2;
-    buffers_init(&b1, e, n + offset, scene);
-    buffers_init(&b2, e, n + offset, scene);
+    buffers_init(&b1, e, n + offset, params);
+    buffers_init(&b2, e, n + offset, params);
     for (size_t i = 0; i < n + offset; i++)
         sample_into(e, &b1, i);
     for (int j = 0; j < e->n_in; j++) {
@@ -305,23 +364,22 @@ static void simd_matches_scalar(void **state)
             continue;
         const sc_batch_entry *s = sc_batch_find(e->kernel, e->tier, SC_ISA_SCALAR);
         assert_non_null(s);
-        int n_scenes = strcmp(e->kernel, "shade") == 0 ? 3 : 1;
-        for (int sc = 0; sc < n_scenes; sc++) {
-            const sc_batch_scene *scene = n_scenes > 1 ? &scenes[sc] : NULL;
+        for (int k = 0; k < params_count(e); k++) {
+            const void *params = params_of(e, k);
             float v[9];
             for (size_t n = 0; n <= 19; n++) /* every tail length for widths 4 and 8 */
                 for (size_t offset = 0; offset < 2; offset++) { /* aligned and not */
                     sc_batch_sample(e, &rng, v);
-                    compare_with_scalar(e, s, scene, n, offset, next() % (n + 1), v);
+                    compare_with_scalar(e, s, params, n, offset, next() % (n + 1), v);
                 }
             for (int a = 0; a < N_SPECIALS; a++) /* specials in random lanes of 37 elements */
                 for (int b = 0; b < (e->n_in == 2 ? N_SPECIALS : 1); b++) {
                     special_inputs(e, a, b, v);
-                    compare_with_scalar(e, s, scene, 37, next() & 1, next() % 37, v);
+                    compare_with_scalar(e, s, params, 37, next() & 1, next() % 37, v);
                 }
             for (int k = 0; k < 60; k++) { /* random data: the bound test covers 10^6 */
                 sc_batch_sample(e, &rng, v);
-                compare_with_scalar(e, s, scene, 64, 0, next() % 64, v);
+                compare_with_scalar(e, s, params, 64, 0, next() % 64, v);
             }
         }
     }
@@ -348,11 +406,11 @@ static void streaming_stores_give_the_same_bits(void **state)
         const sc_batch_entry *e = sc_batch_find("exp2", "u4", (sc_isa)isa);
         if (!e || !sc_isa_supported(e->isa))
             continue;
-        sc_batch_args whole = {{x + 1}, {o1 + 1}, N, NULL, NULL}; /* unaligned by one float */
+        sc_batch_args whole = {{x + 1}, {o1 + 1}, N, NULL}; /* unaligned by one float */
         e->fn(&whole);
         for (size_t start = 0; start < N; start += 4096) {
             sc_batch_args part = {
-                {x + 1 + start}, {o2 + 1 + start}, N - start < 4096 ? N - start : 4096, NULL, NULL};
+                {x + 1 + start}, {o2 + 1 + start}, N - start < 4096 ? N - start : 4096, NULL};
             e->fn(&part);
         }
         for (size_t k = 1; k <= N; k++)
@@ -378,7 +436,7 @@ static void table_is_complete(void **state)
         assert_non_null(sc_batch_find(e->kernel, e->tier, SC_ISA_SCALAR));
     }
     float x[3] = {1, 2, 3}, out[3];
-    sc_batch_args a = {{x}, {out}, 3, NULL, NULL};
+    sc_batch_args a = {{x}, {out}, 3, NULL};
     assert_int_equal(sc_batch_run("exp2", "u1", &a), 0);
     assert_true(out[2] == 8.0f);
     assert_int_equal(sc_batch_run("exp2", "u7", &a), -1);
@@ -408,5 +466,7 @@ int main(void)
         cmocka_unit_test(streaming_stores_give_the_same_bits),
         cmocka_unit_test(every_stated_bound_holds),
     };
-    return cmocka_run_group_tests_name("batch", tests, NULL, NULL);
+    int failed = cmocka_run_group_tests_name("batch", tests, NULL, NULL);
+    free_scenes();
+    return failed;
 }

@@ -1,6 +1,6 @@
 /* The attenuation, spot and BRDF batch kernels beyond the parameters of their table rows
  * (tests/unit/test_batch.c checks those on 10^6 inputs): every BRDF model, form, D × G × F
- * combination, roughness and the cos flag, and the edge rules of light.h (r = 0 finite,
+ * combination and roughness, anisotropic ones on 10^6 inputs, and the edge rules of light.h (r = 0 finite,
  * f_c = f_max flat, r_start = r_end a step, cutoff 180, inner = outer a hard edge, exponent 0),
  * on every tier and instruction set, against the library's double functions (the references of
  * src/batch/reference_light.c) within each row's stated bound. */
@@ -21,6 +21,7 @@
 #include "shadecalc/brdf.h"
 #include "shadecalc/scene.h"
 
+#include "batch/reference.h"
 #include "batch/reference_light.h"
 
 enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too */
@@ -104,12 +105,11 @@ static void fill_references(const sc_batch_entry *e, run_buffers *b)
 /* ---- BRDFs ---- */
 
 /* The table's test BRDF (GGX, smith-correlated, Schlick, coloured terms) as another model. */
-static sc_batch_brdf_params brdf_params(sc_brdf_kind model, int form, int cos_flag)
+static sc_brdf brdf_params(sc_brdf_kind model, int form)
 {
-    sc_batch_brdf_params p = sc_batch_test_brdf;
-    p.model = model;
+    sc_brdf p = sc_batch_test_brdf;
+    p.kind = model;
     p.form = form;
-    p.cos = cos_flag;
     return p;
 }
 
@@ -125,46 +125,52 @@ static void sampled_buffers(run_buffers *b, const sc_batch_entry *e, size_t n, c
     }
 }
 
-static void check_brdf(const sc_batch_brdf_params *p, const char *what)
+/* n random inputs of kernel's domain, every row of it with params against the reference */
+static void check_rows_on(const char *kernel, const void *params, size_t n, const char *what)
 {
-    const sc_batch_entry *e = scalar_row("brdf");
+    const sc_batch_entry *e = scalar_row(kernel);
     run_buffers b;
-    sampled_buffers(&b, e, N_BRDF, p);
+    sampled_buffers(&b, e, n, params);
     fill_references(e, &b);
-    check_all_rows("brdf", &b, what);
+    check_all_rows(kernel, &b, what);
     buffers_release(&b);
 }
+
+static void check_brdf_on(const sc_brdf *p, size_t n, const char *what)
+{
+    check_rows_on("brdf", p, n, what);
+}
+
+static void check_brdf(const sc_brdf *p, const char *what) { check_brdf_on(p, N_BRDF, what); }
 
 static void every_brdf_form_within_bounds(void **state)
 {
     (void)state;
     static const int forms[] = {1, 3, 2, 3, 2, 2}; /* by sc_brdf_kind */
-    for (int cos_flag = 0; cos_flag < 2; cos_flag++)
-        for (int model = SC_BRDF_LAMBERT; model < SC_BRDF_COOK_TORRANCE; model++)
-            for (int form = 0; form < forms[model]; form++) {
-                sc_batch_brdf_params p = brdf_params((sc_brdf_kind)model, form, cos_flag);
-                check_brdf(&p, sc_brdf_form_name((sc_brdf_kind)model, form));
-            }
+    for (int model = SC_BRDF_LAMBERT; model < SC_BRDF_COOK_TORRANCE; model++)
+        for (int form = 0; form < forms[model]; form++) {
+            sc_brdf p = brdf_params((sc_brdf_kind)model, form);
+            check_brdf(&p, sc_brdf_form_name((sc_brdf_kind)model, form));
+        }
 }
 
-/* D × G × F × form, at two roughnesses, with and without the cosine */
+/* D × G × F × form, at two roughnesses */
 static void every_cook_torrance_within_bounds(void **state)
 {
     (void)state;
-    static const float alphas[] = {0.2f, 0.6f};
+    static const double alphas[] = {0.2, 0.6};
     for (int D = 0; D < 2; D++)
         for (int G = 0; G < 3; G++)
             for (int F = 0; F < 3; F++)
                 for (int k = 0; k < 2; k++) {
-                    sc_batch_brdf_params p = brdf_params(SC_BRDF_COOK_TORRANCE,
-                                                         k & 1 ? SC_CT_1982 : SC_CT_WALTER, k);
-                    p.D = D;
-                    p.G = G;
-                    p.F = F;
-                    p.alpha = alphas[(D + G + F + k) & 1];
+                    sc_brdf p = brdf_params(SC_BRDF_COOK_TORRANCE,
+                                            k & 1 ? SC_CT_1982 : SC_CT_WALTER);
+                    p.D = (sc_ndf)D;
+                    p.G = (sc_masking)G;
+                    p.F = (sc_fresnel)F;
+                    p.ax = p.ay = alphas[(D + G + F + k) & 1];
                     char what[64];
-                    snprintf(what, sizeof what, "D %d G %d F %d alpha %g", D, G, F,
-                             (double)p.alpha);
+                    snprintf(what, sizeof what, "D %d G %d F %d alpha %g", D, G, F, p.ax);
                     check_brdf(&p, what);
                 }
 }
@@ -173,25 +179,25 @@ static void every_cook_torrance_within_bounds(void **state)
 static void brdf_parameter_extremes_within_bounds(void **state)
 {
     (void)state;
-    sc_batch_brdf_params p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, 0);
-    p.m = 0.0f;
+    sc_brdf p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN);
+    p.m = 0.0;
     check_brdf(&p, "blinn m 0");
-    p.m = 200.0f;
+    p.m = 200.0;
     check_brdf(&p, "blinn m 200");
-    p = brdf_params(SC_BRDF_PHONG, SC_PHONG_MODIFIED, 1);
-    p.m = 1.0f;
+    p = brdf_params(SC_BRDF_PHONG, SC_PHONG_MODIFIED);
+    p.m = 1.0;
     check_brdf(&p, "phong m 1");
-    p = brdf_params(SC_BRDF_OREN_NAYAR, SC_OREN_FULL, 0);
-    p.sigma = 1.2f;
+    p = brdf_params(SC_BRDF_OREN_NAYAR, SC_OREN_FULL);
+    p.sigma = 1.2;
     check_brdf(&p, "oren-nayar sigma 1.2");
-    p.sigma = 0.0f;
+    p.sigma = 0.0;
     check_brdf(&p, "oren-nayar sigma 0");
-    p = brdf_params(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER, 0);
+    p = brdf_params(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER);
     p.F = SC_F_EXACT;
-    p.ior = 2.4f;
+    p.ior = 2.4;
     check_brdf(&p, "exact fresnel eta 2.4");
-    p = brdf_params(SC_BRDF_WARD, SC_WARD_GMD, 0);
-    p.alpha = 0.2f;
+    p = brdf_params(SC_BRDF_WARD, SC_WARD_GMD);
+    p.ax = p.ay = 0.2;
     check_brdf(&p, "ward gmd alpha 0.2");
 }
 
@@ -200,17 +206,16 @@ static void brdf_normal_incidence_by_hand(void **state)
 {
     (void)state;
     float one[1] = {1.0f}, zero[1] = {0.0f}, r[1], g[1], bl[1];
-    sc_batch_brdf_params p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_NORMALIZED, 1);
-    sc_batch_args a = {
-        {zero, zero, one, zero, zero, one, zero, zero, one}, {r, g, bl}, 1, NULL, &p};
+    sc_brdf p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_NORMALIZED);
+    sc_batch_args a = {{zero, zero, one, zero, zero, one, zero, zero, one}, {r, g, bl}, 1, &p};
     assert_int_equal(sc_batch_run("brdf", "bits16", &a), 0);
-    /* c_diff/π + c_spec (m+8)/(8π), cos θ_i = 1 */
+    /* c_diff/π + c_spec (m+8)/(8π) */
     double want = 0.8 / pi + 0.2 * 40.0 / (8.0 * pi);
     assert_true(fabs(r[0] - want) <= 1e-6 * want);
-    p.model = SC_BRDF_LAMBERT;
+    p.kind = SC_BRDF_LAMBERT;
     assert_int_equal(sc_batch_run("brdf", "bits12", &a), 0);
     assert_true(fabs(bl[0] - 0.2 / pi) <= 1e-6);
-    p.model = 99; /* out of range: lambert */
+    p.kind = (sc_brdf_kind)99; /* out of range: lambert */
     assert_int_equal(sc_batch_run("brdf", "bits8", &a), 0);
     assert_true(fabs(g[0] - 0.5 / pi) <= 1e-6);
 }
@@ -237,22 +242,21 @@ static void check_function(const char *kernel, const void *params, double hi, co
 
 /* Parameters at the edges of every attenuation function: a pure quadratic clq, a window with
  * r_start = r_end (a step), a flat pixar (f_c = f_max), r_max = 5. */
-static const sc_batch_atten_params edge_atten = {.sc = 0.0f,
-                                                 .sl = 0.0f,
-                                                 .sq = 1.0f,
-                                                 .r_start = 5.0f,
-                                                 .r_end = 5.0f,
-                                                 .f_max = 3.0f,
-                                                 .f_c = 3.0f,
-                                                 .r_c = 5.0f,
-                                                 .s_e = 1.5f,
-                                                 .r_max = 5.0f};
+static sc_atten edge_atten(void)
+{
+    sc_atten a = sc_batch_test_atten;
+    a.sc = a.sl = 0.0, a.sq = 1.0;      /* pure quadratic */
+    a.r_start = a.r_end = 5.0;          /* a step */
+    a.f_max = a.f_c = 3.0, a.r_c = 5.0; /* flat inside r_c */
+    a.s_e = 1.5, a.r_max = 5.0;
+    return a;
+}
 
 static void attenuation_edges(void **state)
 {
     (void)state;
     const float points[] = {0.0f, 0x1p-149f, 1e-3f, 5.0f, 0x1.3ffffep+2f, 0x1.400002p+2f, 10.0f};
-    sc_batch_atten_params p = edge_atten;
+    sc_atten p = edge_atten();
     int n = (int)(sizeof points / sizeof points[0]);
     check_function("atten_invsq", &p, 20.0, points, n, "r = 0");
     check_function("atten_clq", &p, 20.0, points, n, "pure quadratic, r = 0");
@@ -260,8 +264,8 @@ static void attenuation_edges(void **state)
     check_function("atten_pixar", &p, 20.0, points, n, "f_c = f_max: flat");
     check_function("atten_windowed", &p, 20.0, points, n, "r = r_max");
     check_function("atten_none", &p, 20.0, points, n, "none");
-    p.f_c = 0.25f;
-    p.s_e = 0.5f;
+    p.f_c = 0.25;
+    p.s_e = 0.5;
     check_function("atten_pixar", &p, 20.0, points, n, "f_c < f_max");
 }
 
@@ -269,9 +273,9 @@ static void attenuation_edges(void **state)
 static void attenuation_by_hand(void **state)
 {
     (void)state;
-    sc_batch_atten_params p = edge_atten;
+    sc_atten p = edge_atten();
     float r[4] = {0.0f, 5.0f, 0x1.400002p+2f, 20.0f}, out[4];
-    sc_batch_args a = {{r}, {out}, 4, NULL, &p};
+    sc_batch_args a = {{r}, {out}, 4, &p};
     assert_int_equal(sc_batch_run("atten_window", "u2", &a), 0);
     assert_true(out[0] == 1.0f && out[1] == 1.0f && out[2] == 0.0f && out[3] == 0.0f);
     assert_int_equal(sc_batch_run("atten_invsq", "u2", &a), 0);
@@ -288,16 +292,16 @@ static void spot_edges(void **state)
     float c30 = (float)cos(30.0 * pi / 180.0);
     const float points[] = {-1.0f, 0.0f, 1.0f, c30, nextafterf(c30, 0.0f), nextafterf(c30, 2.0f)};
     int n = (int)(sizeof points / sizeof points[0]);
-    sc_batch_spot_params p = {.exponent = 0.0f, .cutoff = 180.0f, .inner = 30.0f, .outer = 30.0f};
+    sc_spot p = {.exponent = 0.0, .cutoff = 180.0, .inner = 30.0, .outer = 30.0};
     check_function("spot_opengl", &p, 1.0, points, n, "cutoff 180");
     check_function("spot_directx", &p, 1.0, points, n, "inner = outer");
     check_function("spot_smoothstep", &p, 1.0, points, n, "inner = outer");
-    p.cutoff = 30.0f;
+    p.cutoff = 30.0;
     check_function("spot_opengl", &p, 1.0, points, n, "exponent 0");
-    p.cutoff = 90.0f;
-    p.exponent = 3.0f;
-    p.inner = 0.0f;
-    p.outer = 90.0f;
+    p.cutoff = 90.0;
+    p.exponent = 3.0;
+    p.inner = 0.0;
+    p.outer = 90.0;
     check_function("spot_opengl", &p, 1.0, points, n, "cutoff 90");
     check_function("spot_directx", &p, 1.0, points, n, "0..90");
     check_function("spot_smoothstep", &p, 1.0, points, n, "0..90");
@@ -308,8 +312,8 @@ static void spot_by_hand(void **state)
     (void)state;
     float c30 = (float)cos(30.0 * pi / 180.0);
     float c[4] = {-1.0f, c30, nextafterf(c30, 0.0f), 1.0f}, out[4];
-    sc_batch_spot_params p = {.exponent = 2.0f, .cutoff = 180.0f, .inner = 30.0f, .outer = 30.0f};
-    sc_batch_args a = {{c}, {out}, 4, NULL, &p};
+    sc_spot p = {.exponent = 2.0, .cutoff = 180.0, .inner = 30.0, .outer = 30.0};
+    sc_batch_args a = {{c}, {out}, 4, &p};
     assert_int_equal(sc_batch_run("spot_opengl", "u1", &a), 0);
     assert_true(out[0] == 1.0f && out[3] == 1.0f);
     for (int t = 0; t < 2; t++) {
@@ -319,6 +323,88 @@ static void spot_by_hand(void **state)
         float at_edge = (double)c30 >= cos(30.0 * pi / 180.0) ? 1.0f : 0.0f;
         assert_true(out[0] == 0.0f && out[1] == at_edge && out[2] == 0.0f && out[3] == 1.0f);
     }
+}
+
+/* ---- anisotropic BRDFs ---- */
+
+/* b with α_x = 0.25, α_y = 0.6 (the tangent frame: sc_frame_make's from n) */
+static void make_anisotropic(sc_brdf *b, double unused)
+{
+    (void)unused;
+    b->ax = 0.25;
+    b->ay = 0.6;
+}
+
+/* Anisotropic Ward and Cook-Torrance (GGX and Beckmann, both Smith forms) on 10^6 inputs
+ * each, every tier and instruction set, against brdf.c in double. */
+static void anisotropic_brdfs_within_bounds(void **state)
+{
+    (void)state;
+    enum { N_ANISO = 1000000 };
+    sc_brdf p = brdf_params(SC_BRDF_WARD, SC_WARD_1992);
+    make_anisotropic(&p, 0.0);
+    check_brdf_on(&p, N_ANISO, "anisotropic ward");
+    p = brdf_params(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER);
+    make_anisotropic(&p, 0.0);
+    check_brdf_on(&p, N_ANISO, "anisotropic ggx smith-correlated");
+    p.D = SC_D_BECKMANN;
+    p.G = SC_G_SMITH;
+    p.ax = 0.35; /* the stated domain of anisotropic Beckmann */
+    check_brdf_on(&p, N_ANISO, "anisotropic beckmann smith");
+}
+
+/* Every form of ward and cook-torrance anisotropic, fewer inputs. */
+static void anisotropic_forms_within_bounds(void **state)
+{
+    (void)state;
+    for (int form = 0; form < 3; form++) {
+        sc_brdf p = brdf_params(SC_BRDF_WARD, form);
+        make_anisotropic(&p, 0.0);
+        check_brdf(&p, sc_brdf_form_name(SC_BRDF_WARD, form));
+    }
+    for (int D = 0; D < 2; D++)
+        for (int G = 0; G < 3; G++) {
+            sc_brdf p = brdf_params(SC_BRDF_COOK_TORRANCE, (D + G) & 1);
+            make_anisotropic(&p, 0.0);
+            p.D = (sc_ndf)D;
+            p.G = (sc_masking)G;
+            char what[64];
+            snprintf(what, sizeof what, "anisotropic D %d G %d", D, G);
+            check_brdf(&p, what);
+        }
+}
+
+/* ---- the shading kernel through plans of the standard scene (1 directional, 1 point and 3
+ * spot lights) with other BRDFs ---- */
+
+static void blinn_exponent(sc_brdf *b, double m) { b->m = m; }
+
+/* n inputs of the shade rows' domain, the standard scene with BRDF kind changed by change(b,
+ * x), every shade row (tier, instruction set) against sc_shade in double. */
+static void check_shade_scene(sc_brdf_kind kind, void (*change)(sc_brdf *, double), double x,
+                              size_t n, const char *what)
+{
+    sc_light lights[SC_BATCH_MAX_LIGHTS];
+    sc_scene scene;
+    char why[256];
+    sc_batch_example_scene(kind, 1, 1, 3, lights, &scene);
+    change(&scene.model.brdf, x);
+    sc_batch_plan *plan = sc_batch_plan_compile(&scene, "accurate", SC_ISA_SCALAR, why, sizeof why);
+    if (!plan)
+        fail_msg("%s: %s", what, why);
+    check_rows_on("shade", plan, n, what);
+    sc_batch_plan_free(plan);
+}
+
+/* The shading kernel with anisotropic Ward and Cook-Torrance (through the BRDF kernel's
+ * models) on 10^6 inputs each. */
+static void anisotropic_shading_within_bounds(void **state)
+{
+    (void)state;
+    enum { N_ANISO = 1000000 };
+    check_shade_scene(SC_BRDF_WARD, make_anisotropic, 0.0, N_ANISO, "anisotropic ward");
+    check_shade_scene(SC_BRDF_COOK_TORRANCE, make_anisotropic, 0.0, N_ANISO,
+                      "anisotropic cook-torrance");
 }
 
 /* ---- the shading kernel's lobe exponents ---- */
@@ -332,21 +418,12 @@ static void shade_lobe_exponents_within_bounds(void **state)
 {
     (void)state;
     enum { N_SHADE = 1000000 };
-    static const float exponents[] = {40.5f, 128.0f, 64.0f};
-    const sc_batch_entry *e = scalar_row("shade");
-    run_buffers b;
-    sampled_buffers(&b, e, N_SHADE, NULL);
+    static const double exponents[] = {40.5, 128.0, 64.0};
     for (size_t k = 0; k < sizeof exponents / sizeof exponents[0]; k++) {
-        sc_batch_scene scene;
         char what[32];
-        sc_batch_scene_example(SC_BATCH_BLINN_PHONG, 1, 1, 3, &scene);
-        scene.m = exponents[k];
-        b.args.scene = &scene;
-        fill_references(e, &b);
-        snprintf(what, sizeof what, "m = %g", (double)exponents[k]);
-        check_all_rows("shade", &b, what);
+        snprintf(what, sizeof what, "m = %g", exponents[k]);
+        check_shade_scene(SC_BRDF_BLINN_PHONG, blinn_exponent, exponents[k], N_SHADE, what);
     }
-    buffers_release(&b);
 }
 
 /* ---- scene plans ---- */
@@ -416,7 +493,7 @@ static void make_plan_scene(const char *model, sc_light lights[4], sc_scene *sce
     static const char *const specs[] = {
         "directional dir=-1,-1,2 E=0.7", "point pos=2,-3,3 I=20",
         "spot pos=0,-4,1 dir=0,1,0 I=30 spot=smoothstep inner=10 outer=40",
-        "point pos=-3,1,2 I=4,8,12"};
+        "point pos=-3,1,2 I=4,8,12 atten=clq sc=1 sl=0.5 sq=0.25"};
     char err[256];
     for (int k = 0; k < 4; k++)
         if (sc_light_parse(specs[k], &lights[k], err, sizeof err) != 0)
@@ -428,13 +505,20 @@ static void make_plan_scene(const char *model, sc_light lights[4], sc_scene *sce
 
 /* A plan of each tier on each instruction set shades within the tier's bound of sc_shade in
  * double (relative, plus the same allowance times the largest channel: the kernel's absolute
- * term; twice, for the float rounding of the uniforms), for each BRDF the kernel has. */
+ * term; twice, for the float rounding of the uniforms), for each BRDF model, lights with
+ * inverse-square and clq falloff. */
 static void plans_match_sc_shade(void **state)
 {
     (void)state;
-    static const char *const models[] = {"lambert", "blinn-phong m=40 spec=0.4",
-                                         "blinn-phong m=40.5 spec=0.4",
-                                         "cook-torrance alpha=0.3 f0=0.04"};
+    static const char *const models[] = {"lambert",
+                                         "blinn-phong m=40 spec=0.4",
+                                         "blinn-phong m=40.5 spec=0.4 form=plain",
+                                         "cook-torrance alpha=0.3 f0=0.04",
+                                         "phong m=20 spec=0.3",
+                                         "ward ax=0.2 ay=0.5 spec=0.3",
+                                         "oren-nayar sigma=30 form=full",
+                                         "cook-torrance D=beckmann G=smith F=exact ax=0.3 ay=0.5"};
+    enum { N_MODELS = sizeof models / sizeof models[0] };
     static const char *const tiers[] = {"accurate", "bits12", "bits8"};
     plan_arrays a;
     for (int j = 0; j < 9; j++)
@@ -442,7 +526,7 @@ static void plans_match_sc_shade(void **state)
     for (int j = 0; j < 3; j++)
         assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
     plan_points(&a, N_PLAN);
-    for (int m = 0; m < 4; m++) {
+    for (int m = 0; m < N_MODELS; m++) {
         sc_light lights[4];
         sc_scene scene;
         make_plan_scene(models[m], lights, &scene);
@@ -479,6 +563,100 @@ static void plans_match_sc_shade(void **state)
         free(a.in[j]);
     for (int j = 0; j < 3; j++)
         free(a.out[j]);
+}
+
+/* ---- the straight-line variants ---- */
+
+/* A plan of k lights of one shape (1..4 directional, or point with inverse-square falloff)
+ * runs straight-line code; the same lights plus one of the other kind with intensity 0 run the
+ * generic loop, whose extra term adds exactly 0: both give the same bits, every tier and
+ * instruction set, for each of the kernel's own lobes (the generic loop is the one
+ * tests/unit/test_batch.c bounds on 10^6 inputs). */
+static void fixed_variants_match_the_loop(void **state)
+{
+    (void)state;
+    static const sc_brdf_kind kinds[] = {SC_BRDF_LAMBERT, SC_BRDF_BLINN_PHONG,
+                                         SC_BRDF_COOK_TORRANCE};
+    static const char *const tiers[] = {"accurate", "bits12", "bits8"};
+    plan_arrays a, loop;
+    for (int j = 0; j < 9; j++)
+        assert_non_null(a.in[j] = malloc(N_PLAN * sizeof(float)));
+    for (int j = 0; j < 3; j++) {
+        assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
+        assert_non_null(loop.out[j] = malloc(N_PLAN * sizeof(float)));
+    }
+    plan_points(&a, N_PLAN);
+    for (int shape = 0; shape < 2; shape++)
+        for (int count = 1; count <= 4; count++)
+            for (size_t b = 0; b < sizeof kinds / sizeof kinds[0]; b++) {
+                sc_light lights[SC_BATCH_MAX_LIGHTS];
+                sc_scene fixed, generic;
+                sc_batch_example_scene(kinds[b], shape ? 0 : count + 1, shape ? count + 1 : 0, 0,
+                                       lights, &generic);
+                sc_light *extra = &lights[count];
+                sc_light_init(extra, shape ? SC_LIGHT_DIRECTIONAL : SC_LIGHT_POINT);
+                extra->pos[2] = 1.0;
+                extra->intensity[0] = extra->intensity[1] = extra->intensity[2] = 0.0;
+                extra->ambient[0] = extra->ambient[1] = extra->ambient[2] = 0.0;
+                fixed = generic;
+                fixed.n_lights = count;
+                for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+                    for (int t = 0; t < 3 && sc_isa_supported((sc_isa)isa); t++) {
+                        char why[256];
+                        sc_batch_plan *pf = sc_batch_plan_compile(&fixed, tiers[t], (sc_isa)isa,
+                                                                  why, sizeof why);
+                        sc_batch_plan *pg = sc_batch_plan_compile(&generic, tiers[t], (sc_isa)isa,
+                                                                  why, sizeof why);
+                        assert_non_null(pf);
+                        assert_non_null(pg);
+                        sc_batch_plan_shade(pf, (const float *const *)a.in, a.out, N_PLAN);
+                        sc_batch_plan_shade(pg, (const float *const *)a.in, loop.out, N_PLAN);
+                        for (int j = 0; j < 3; j++)
+                            if (memcmp(a.out[j], loop.out[j], N_PLAN * sizeof(float)) != 0)
+                                fail_msg("%d %s lights, %s, %s %s: the variant's bits differ",
+                                         count, shape ? "point" : "directional",
+                                         sc_brdf_kind_name(kinds[b]), tiers[t],
+                                         sc_isa_name((sc_isa)isa));
+                        sc_batch_plan_free(pf);
+                        sc_batch_plan_free(pg);
+                    }
+            }
+    for (int j = 0; j < 9; j++)
+        free(a.in[j]);
+    for (int j = 0; j < 3; j++) {
+        free(a.out[j]);
+        free(loop.out[j]);
+    }
+}
+
+/* The reason a plan is refused names the model, the light or its kind. */
+static void plans_refuse_with_reasons(void **state)
+{
+    (void)state;
+    sc_light lights[4];
+    sc_scene scene;
+    char why[256];
+    make_plan_scene("ads", lights, &scene);
+    assert_null(sc_batch_plan_compile(&scene, "bits12", SC_ISA_SCALAR, why, sizeof why));
+    assert_non_null(strstr(why, "model ads"));
+    make_plan_scene("lambert", lights, &scene);
+    lights[1].range = 10.0;
+    assert_null(sc_batch_plan_compile(&scene, "bits12", SC_ISA_SCALAR, why, sizeof why));
+    assert_string_equal(why, "light 2: range=10 (direct3d9) is not covered by the batch kernels");
+    lights[1].range = INFINITY;
+    lights[2].kind = (sc_light_kind)7; /* a kind added to light.h after the kernels */
+    assert_null(sc_batch_plan_compile(&scene, "bits12", SC_ISA_SCALAR, why, sizeof why));
+    assert_string_equal(why, "light 3: light kind 7 not covered by the batch kernels");
+    lights[2].kind = SC_LIGHT_POINT;
+    scene.n_lights = SC_BATCH_MAX_LIGHTS + 1;
+    assert_null(sc_batch_plan_compile(&scene, "bits12", SC_ISA_SCALAR, why, sizeof why));
+    assert_string_equal(why, "65 lights: the batch kernels take at most 64");
+    scene.n_lights = 4;
+    assert_null(sc_batch_plan_compile(&scene, "u1", SC_ISA_SCALAR, why, sizeof why));
+    assert_non_null(strstr(why, "tier u1"));
+    sc_batch_plan *plan = sc_batch_plan_compile(&scene, "bits8", SC_ISA_SCALAR, why, sizeof why);
+    assert_non_null(plan);
+    sc_batch_plan_free(plan);
 }
 
 typedef struct {
@@ -553,8 +731,13 @@ int main(void)
         cmocka_unit_test(attenuation_edges),
         cmocka_unit_test(spot_by_hand),
         cmocka_unit_test(spot_edges),
+        cmocka_unit_test(anisotropic_brdfs_within_bounds),
+        cmocka_unit_test(anisotropic_forms_within_bounds),
+        cmocka_unit_test(anisotropic_shading_within_bounds),
         cmocka_unit_test(shade_lobe_exponents_within_bounds),
         cmocka_unit_test(plans_match_sc_shade),
+        cmocka_unit_test(plans_refuse_with_reasons),
+        cmocka_unit_test(fixed_variants_match_the_loop),
         cmocka_unit_test(one_plan_many_threads),
     };
     return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);

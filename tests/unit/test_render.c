@@ -304,23 +304,27 @@ static void batch_kernel_matches_sc_shade(void **state)
     sc_surface_free(s);
 }
 
-/* What the kernel does not compute stays with sc_shade: other BRDFs, other falloffs, legacy
- * models, ranges; the plan says which. */
+/* What the kernels do not cover stays with sc_shade: legacy models and ranges; the plan says
+ * which. Every BRDF, falloff and spot function is covered. */
 static void other_scenes_keep_sc_shade(void **state)
 {
     (void)state;
     static const struct {
         const char *light, *model, *why;
     } cases[] = {
-        {"spot pos=0,0,3 dir=0,0,-1 I=5 atten=window rstart=1 rend=9", "lambert",
-         "light 1: the kernel's falloff"},
-        {"point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01", "lambert",
-         "light 1: the kernel's falloff"},
-        {"point pos=0,0,3 I=5", "phong m=20", "brdf phong"},
-        {"point pos=0,0,3 I=5", "blinn-phong form=plain", "form=normalized only"},
-        {"point pos=0,0,3 I=5", "cook-torrance D=beckmann", "D=ggx"},
-        {"point pos=0,0,3 I=5", "cook-torrance ax=0.2 ay=0.4", "anisotropic"},
-        {"point pos=0,0,3 I=5", "opengl", "legacy models"},
+        {"point pos=0,0,3 I=5 range=4", "lambert", "light 1: range=4"},
+        {"point pos=0,0,3 I=5", "opengl", "model opengl"},
+        {"point pos=0,0,3 I=5", "ads", "model ads"},
+    };
+    static const struct {
+        const char *light, *model;
+    } covered[] = {
+        {"spot pos=0,0,3 dir=0,0,-1 I=5 atten=window rstart=1 rend=9", "lambert"},
+        {"point pos=0,0,3 I=5 atten=clq sc=1 sl=0.1 sq=0.01", "lambert"},
+        {"point pos=0,0,3 I=5", "phong m=20"},
+        {"point pos=0,0,3 I=5", "blinn-phong form=plain"},
+        {"point pos=0,0,3 I=5", "cook-torrance D=beckmann"},
+        {"point pos=0,0,3 I=5", "cook-torrance ax=0.2 ay=0.4"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         scene_box b;
@@ -330,6 +334,16 @@ static void other_scenes_keep_sc_shade(void **state)
         if (!strstr(why, cases[k].why))
             fail_msg("%s / %s: reason '%s' lacks '%s'", cases[k].light, cases[k].model, why,
                      cases[k].why);
+    }
+    for (size_t k = 0; k < sizeof covered / sizeof covered[0]; k++) {
+        scene_box b;
+        char why[256] = "";
+        make_scene(&b, covered[k].light, covered[k].model);
+        sc_batch_plan *plan = sc_batch_plan_compile(&b.scene, "accurate", sc_isa_active(), why,
+                                                    sizeof why);
+        if (!plan)
+            fail_msg("%s / %s: %s", covered[k].light, covered[k].model, why);
+        sc_batch_plan_free(plan);
     }
     scene_box b;
     char why[256] = "";

@@ -4,3 +4,4 @@
 #include "simd/shade_impl.h"
 #include "simd/trig_impl.h"
 #include "simd/light_impl.h"
+#include "simd/scene_impl.h"

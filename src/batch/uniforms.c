@@ -1,0 +1,278 @@
+/* The float uniforms of the batch kernels from the double model types (src/simd/uniforms.h):
+ * computed once, in double where it matters, rounded to float once. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "simd/uniforms.h"
+
+static const double pi = 3.14159265358979323846;
+static const double radians = 3.14159265358979323846 / 180.0;
+
+/* ---- attenuation and spot ---- */
+
+void sc_uniforms_atten(const sc_atten *a, sc_atten_kind kind, sc_func_uniforms *u)
+{
+    memset(u, 0, sizeof *u);
+    switch (kind) {
+    case SC_ATTEN_CLQ: *u = (sc_func_uniforms){{(float)a->sc, (float)a->sl, (float)a->sq}}; break;
+    case SC_ATTEN_WINDOW:
+        *u = (sc_func_uniforms){
+            {(float)a->r_start, (float)a->r_end, (float)(a->r_end - a->r_start)}};
+        break;
+    case SC_ATTEN_PIXAR: { /* flat where f_c = f_max: k0 = 0 */
+        double k0 = log(a->f_c / a->f_max);
+        *u = (sc_func_uniforms){{(float)a->f_c, (float)a->r_c, (float)a->s_e, (float)a->f_max,
+                                 (float)k0, k0 == 0.0 ? 0.0f : (float)(-a->s_e / k0)}};
+        break;
+    }
+    case SC_ATTEN_WINDOWED: {
+        double r2 = a->r_max * a->r_max;
+        *u = (sc_func_uniforms){{(float)a->r_max, (float)r2, (float)(1.0 / (r2 * r2))}};
+        break;
+    }
+    default: break; /* none, inverse-square: no constants */
+    }
+}
+
+static float float_at_least(double x) /* the least float >= x */
+{
+    float f = (float)x;
+    return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+static float float_at_most(double x)
+{
+    float f = (float)x;
+    return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+void sc_uniforms_spot(const sc_spot *s, sc_spot_kind kind, sc_func_uniforms *u)
+{
+    if (kind == SC_SPOT_OPENGL) {
+        *u = (sc_func_uniforms){{float_at_least(cos(s->cutoff * radians)), (float)s->exponent,
+                                 s->cutoff == 180.0 ? 1.0f : 0.0f}};
+        return;
+    }
+    double cp = cos(s->inner * radians), cu = cos(s->outer * radians);
+    float cu_hi = float_at_most(cu);
+    *u = (sc_func_uniforms){{float_at_least(cp), cu_hi, (float)(cu - cu_hi),
+                             cp > cu ? (float)(1.0 / (cp - cu)) : 0.0f, (float)s->exponent}};
+}
+
+/* ---- BRDFs ---- */
+
+/* The colour vectors: diffuse; specular (times F0 for Schlick's split); the third term. */
+static void brdf_colours(const sc_brdf *b, sc_brdf_uniforms *u)
+{
+    int schlick = b->kind == SC_BRDF_COOK_TORRANCE && b->F == SC_F_SCHLICK;
+    for (int c = 0; c < 3; c++) {
+        u->col[0][c] = (float)b->diff[c];
+        u->col[1][c] = (float)(schlick ? b->spec[c] * b->f0[c] : b->spec[c]);
+        u->col[2][c] = (float)(b->kind == SC_BRDF_OREN_NAYAR ? b->diff[c] * b->diff[c]
+                                                             : b->spec[c] * (1.0 - b->f0[c]));
+    }
+}
+
+/* k by model: phong, blinn-phong k0 = the lobe's normalization; ward k0 = 1/(4π α_x α_y) (gmd
+ * 1/(π α_x α_y)); oren-nayar A, B, 0.125 σ²/(σ²+0.09), 0.17/π σ²/(σ²+0.13); cook-torrance
+ * α, η, 1/η², 4 for the 1982 form. */
+static void brdf_constants(const sc_brdf *b, double ax, double ay, sc_brdf_uniforms *u)
+{
+    double s2 = b->sigma * b->sigma, m = b->m;
+    switch (b->kind) {
+    case SC_BRDF_PHONG:
+        u->k[0] = (float)(b->form == SC_PHONG_NORMALIZED ? (m + 2.0) / (2.0 * pi) : 1.0 / pi);
+        break;
+    case SC_BRDF_BLINN_PHONG:
+        u->k[0] = (float)(b->form == SC_BLINN_PLAIN ? 1.0 : (m + 8.0) / (8.0 * pi));
+        break;
+    case SC_BRDF_WARD:
+        u->k[0] = (float)(1.0 / ((b->form == SC_WARD_GMD ? 1.0 : 4.0) * pi * ax * ay));
+        break;
+    case SC_BRDF_OREN_NAYAR:
+        u->k[0] = (float)(1.0 - 0.5 * s2 / (s2 + 0.33));
+        u->k[1] = (float)(0.45 * s2 / (s2 + 0.09));
+        u->k[2] = (float)(0.125 * s2 / (s2 + 0.09));
+        u->k[3] = (float)(0.17 / pi * (s2 / (s2 + 0.13)));
+        break;
+    case SC_BRDF_COOK_TORRANCE:
+        u->k[0] = (float)ax;
+        u->k[1] = (float)b->ior;
+        u->k[2] = (float)(1.0 / (b->ior * b->ior));
+        u->k[3] = b->form == SC_CT_1982 ? 4.0f : 1.0f;
+        break;
+    default: break;
+    }
+}
+
+void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u)
+{
+    double ax = b->ax > 1e-4 ? b->ax : 1e-4, ay = b->ay > 1e-4 ? b->ay : 1e-4;
+    memset(u, 0, sizeof *u);
+    u->model = b->kind >= SC_BRDF_LAMBERT && b->kind <= SC_BRDF_COOK_TORRANCE ? b->kind
+                                                                              : SC_BRDF_LAMBERT;
+    u->form = b->form;
+    u->D = b->D;
+    u->G = b->G;
+    u->F = b->F;
+    u->aniso = (u->model == SC_BRDF_WARD || u->model == SC_BRDF_COOK_TORRANCE) && ax != ay;
+    u->m = (float)b->m;
+    u->ax = (float)ax;
+    u->ay = (float)ay;
+    u->a2 = (float)(ax * ay);
+    brdf_colours(b, u);
+    brdf_constants(b, ax, ay, u);
+}
+
+/* ---- scenes ---- */
+
+static int refuse(char *why, size_t size, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* Writes the reason and returns -1. */
+static int refuse(char *why, size_t size, const char *fmt, ...)
+{
+    if (why && size) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(why, size, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
+
+static int grey(const double v[3]) { return v[0] == v[1] && v[1] == v[2]; }
+
+/* The kernel's own GGX: walter, GGX, smith-correlated, Schlick, grey F0, isotropic. */
+static int own_ggx(const sc_brdf *b)
+{
+    return b->form == SC_CT_WALTER && b->D == SC_D_GGX && b->G == SC_G_SMITH_CORRELATED &&
+           b->F == SC_F_SCHLICK && b->ax == b->ay && grey(b->f0);
+}
+
+static void lobe_exponent(double m, sc_shade_uniforms *u)
+{
+    int integer = m >= 1.0 && m <= SC_LOBE_INT_MAX && m == floor(m);
+    u->lobe_m = integer ? (unsigned)m : 0u;
+    u->lobe_cutoff = integer ? (float)exp2(-100.0 / m) : 0.0f;
+}
+
+static int brdf_uniforms_of(const sc_brdf *b, sc_shade_uniforms *u, char *why, size_t size)
+{
+    if (!(b->kind >= SC_BRDF_LAMBERT && b->kind <= SC_BRDF_COOK_TORRANCE))
+        return refuse(why, size, "brdf kind %d is not covered by the batch kernels", (int)b->kind);
+    sc_uniforms_brdf(b, &u->brdf);
+    u->lobe = b->kind == SC_BRDF_LAMBERT                       ? SC_LOBE_NONE
+              : b->kind == SC_BRDF_BLINN_PHONG                 ? SC_LOBE_BLINN
+              : b->kind == SC_BRDF_COOK_TORRANCE && own_ggx(b) ? SC_LOBE_GGX
+                                                               : SC_LOBE_MODEL;
+    for (int c = 0; c < 3; c++) {
+        u->diff_pi[c] = (float)(b->diff[c] / pi);
+        u->spec[c] = (float)b->spec[c];
+    }
+    u->lobe_k = u->brdf.k[0];
+    u->m = (float)b->m;
+    u->alpha = u->brdf.ax;
+    u->f0 = (float)b->f0[0];
+    lobe_exponent(b->m, u);
+    return 0;
+}
+
+static void unit_float(const double v[3], float out[3])
+{
+    double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int c = 0; c < 3; c++)
+        out[c] = (float)(len > 0.0 ? v[c] / len : 0.0);
+}
+
+/* Directional, point and spot lights, with any falloff and no range (a direct3d9 setting).
+ * Another kind (a new enumerator of sc_light_kind) is refused by its number. */
+static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, char *why, size_t size)
+{
+    memset(u, 0, sizeof *u);
+    switch (l->kind) {
+    case SC_LIGHT_DIRECTIONAL:
+    case SC_LIGHT_POINT:
+    case SC_LIGHT_SPOT: break;
+    default:
+        return refuse(why, size, "light %d: light kind %d not covered by the batch kernels", k + 1,
+                      (int)l->kind);
+    }
+    if (isfinite(l->range))
+        return refuse(why, size,
+                      "light %d: range=%g (direct3d9) is not covered by the batch kernels", k + 1,
+                      l->range);
+    if (l->kind != SC_LIGHT_DIRECTIONAL &&
+        !(l->atten.kind >= SC_ATTEN_NONE && l->atten.kind <= SC_ATTEN_WINDOWED))
+        return refuse(why, size, "light %d: attenuation kind %d not covered by the batch kernels",
+                      k + 1, (int)l->atten.kind);
+    if (l->kind == SC_LIGHT_SPOT &&
+        !(l->spot.kind >= SC_SPOT_OPENGL && l->spot.kind <= SC_SPOT_SMOOTHSTEP))
+        return refuse(why, size, "light %d: spot kind %d not covered by the batch kernels", k + 1,
+                      (int)l->spot.kind);
+    u->kind = l->kind;
+    u->atten = l->kind == SC_LIGHT_DIRECTIONAL ? SC_ATTEN_NONE : l->atten.kind;
+    u->spot = l->spot.kind;
+    unit_float(l->dir, u->dir);
+    for (int c = 0; c < 3; c++) {
+        u->pos[c] = (float)l->pos[c];
+        u->color[c] = (float)l->intensity[c];
+    }
+    sc_uniforms_atten(&l->atten, u->atten, &u->atten_u);
+    if (l->kind == SC_LIGHT_SPOT)
+        sc_uniforms_spot(&l->spot, u->spot, &u->spot_u);
+    return 0;
+}
+
+/* The straight-line variant of the kernel for u's lights (src/simd/uniforms.h), 0 for the
+ * generic loop: 1..4 lights of one shape, directional or point with inverse-square falloff,
+ * with one of the kernel's own lobes. */
+static int variant_of(const sc_shade_uniforms *u)
+{
+    if (u->lobe == SC_LOBE_MODEL || u->n_lights < 1 || u->n_lights > SC_SHADE_FIXED_MAX)
+        return 0;
+    const sc_light_uniforms *first = &u->lights[0];
+    int shape = first->kind == SC_LIGHT_DIRECTIONAL                                        ? 0
+                : first->kind == SC_LIGHT_POINT && first->atten == SC_ATTEN_INVERSE_SQUARE ? 1
+                                                                                           : -1;
+    for (int k = 1; k < u->n_lights && shape >= 0; k++)
+        if (u->lights[k].kind != first->kind || u->lights[k].atten != first->atten)
+            shape = -1;
+    return shape < 0 ? 0 : 1 + SC_SHADE_FIXED_MAX * shape + (u->n_lights - 1);
+}
+
+static const char *const model_names[] = {"brdf", "ads", "opengl", "direct3d9"};
+
+int sc_uniforms_shade(const sc_scene *s, sc_shade_uniforms *u, char *why, size_t size)
+{
+    memset(u, 0, sizeof *u);
+    if (s->model.kind != SC_MODEL_BRDF)
+        return refuse(why, size,
+                      "model %s: the legacy fixed-function models are not covered by the batch "
+                      "kernels (they compute the BRDF models)",
+                      s->model.kind >= SC_MODEL_ADS && s->model.kind <= SC_MODEL_D3D9
+                          ? model_names[s->model.kind]
+                          : "?");
+    if (s->n_lights > SC_BATCH_MAX_LIGHTS)
+        return refuse(why, size, "%d lights: the batch kernels take at most %d", s->n_lights,
+                      SC_BATCH_MAX_LIGHTS);
+    if (brdf_uniforms_of(&s->model.brdf, u, why, size) != 0)
+        return -1;
+    double ambient[3] = {s->ambient[0], s->ambient[1], s->ambient[2]};
+    for (int k = 0; k < s->n_lights; k++) {
+        if (light_uniforms_of(&s->lights[k], k, &u->lights[k], why, size) != 0)
+            return -1;
+        for (int c = 0; c < 3; c++)
+            ambient[c] += s->lights[k].ambient[c];
+    }
+    u->n_lights = s->n_lights;
+    for (int c = 0; c < 3; c++)
+        u->amb_term[c] = (float)(s->model.brdf.amb[c] * ambient[c]);
+    u->variant = variant_of(u);
+    return 0;
+}
