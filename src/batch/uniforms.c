@@ -199,6 +199,14 @@ static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, cha
     case SC_LIGHT_DIRECTIONAL:
     case SC_LIGHT_POINT:
     case SC_LIGHT_SPOT: break;
+    case SC_LIGHT_SPHERE:
+    case SC_LIGHT_TUBE:
+    case SC_LIGHT_DISK:
+    case SC_LIGHT_RECT:
+        return refuse(why, size,
+                      "light %d: area lights are not covered by the batch kernels (shade, "
+                      "sweep and check evaluate them)",
+                      k + 1);
     default:
         return refuse(why, size, "light %d: light kind %d not covered by the batch kernels", k + 1,
                       (int)l->kind);
