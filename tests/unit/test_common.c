@@ -286,9 +286,9 @@ static void trunc_round_modf_match_c99_on_every_257th_float(void **state)
 static void halves_round_to_even(void **state)
 {
     (void)state;
-    static const float x[] = {0.5f,  1.5f,  2.5f,       -0.5f,        -1.5f,      -2.5f,
+    static const float x[] = {0.5f,  1.5f,       2.5f,           -0.5f,      -1.5f,   -2.5f,
                               -0.3f, 8388607.5f, 0x1.fffffep-2f, 4194304.5f, 0x1p23f, 1e30f};
-    static const float want[] = {0.0f,  2.0f,  2.0f,  -0.0f, -2.0f,   -2.0f,
+    static const float want[] = {0.0f,  2.0f,       2.0f, -0.0f,      -2.0f,   -2.0f,
                                  -0.0f, 8388608.0f, 0.0f, 4194304.0f, 0x1p23f, 1e30f};
     for (size_t i = 0; i < sizeof x / sizeof x[0]; i++) {
         assert_true(same_float(sc_roundevenf(x[i]), want[i]));

@@ -223,9 +223,9 @@ static void hyperbolic_extremes_round_correctly(void **state)
 {
     (void)state;
     static const char *const names[] = {"sinh", "cosh", "tanh", "asinh", "acosh", "atanh"};
-    static const float points[] = {0.0f,     0x1p-149f, 0x1.fffffcp-127f, 0x1p-126f, 0x1p-12f,
-                                   0.17f,    0.35f,     1.0f,             1.06f,     9.011f,
-                                   89.4159f, 694.0f,    1e10f,            FLT_MAX,   INFINITY};
+    static const float points[] = {
+        0.0f,  0x1p-149f, 0x1.fffffcp-127f, 0x1p-126f, 0x1p-12f, 0.17f,   0.35f,   1.0f,
+        1.06f, 9.011f,    89.4159f,         694.0f,    1e10f,    FLT_MAX, INFINITY};
     for (size_t n = 0; n < sizeof names / sizeof names[0]; n++) {
         const exh_subject *s = highp(names[n]);
         for (size_t i = 0; i < sizeof points / sizeof points[0]; i++)

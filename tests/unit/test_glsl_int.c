@@ -160,8 +160,8 @@ static void half_packing_rounds_to_nearest_even(void **state)
 
 /* ---- integers: against 64-bit arithmetic ---- */
 
-static const int32_t ints[] = {INT32_MIN, INT32_MIN + 1, -65536, -2, -1, 0, 1, 2, 7, 65535,
-                               INT32_MAX - 1, INT32_MAX};
+static const int32_t ints[] = {INT32_MIN, INT32_MIN + 1, -65536,        -2,       -1, 0, 1, 2,
+                               7,         65535,         INT32_MAX - 1, INT32_MAX};
 enum { N_INTS = (int)(sizeof ints / sizeof ints[0]) };
 
 static void int_functions_match_wide_arithmetic(void **state)
@@ -185,7 +185,7 @@ static void int_functions_match_wide_arithmetic(void **state)
             }
         }
     }
-    assert_true(sc_absi(INT32_MIN) == INT32_MIN); /* wraps, as GLSL ES */
+    assert_true(sc_absi(INT32_MIN) == INT32_MIN);                          /* wraps, as GLSL ES */
     assert_true(sc_clampi(5, 10, 0) == 0 && sc_clampu(5u, 10u, 0u) == 0u); /* lo > hi: hi */
     assert_true(sc_clampu(0xffffffffu, 1u, 0x80000000u) == 0x80000000u);
 }
@@ -203,9 +203,8 @@ static void vector_forms_apply_per_component(void **state)
     assert_true(ne.x && ne.y && !ne.z && !ne.w && !ge.x && !ge.y && ge.z && ge.w);
     sc_bvec4 nan = sc_vec4_isnan(a), inf = sc_vec4_isinf(a);
     assert_true(!nan.x && nan.y && !nan.z && !nan.w && !inf.x && !inf.y && !inf.z && inf.w);
-    assert_true(sc_bvec4_any(nan) && !sc_bvec4_all(nan) && sc_bvec4_all(sc_bvec4_not(
-                                                                 (sc_bvec4){false, false, false,
-                                                                            false})));
+    assert_true(sc_bvec4_any(nan) && !sc_bvec4_all(nan) &&
+                sc_bvec4_all(sc_bvec4_not((sc_bvec4){false, false, false, false})));
     assert_true(!sc_bvec2_any((sc_bvec2){false, false}) && sc_bvec3_all((sc_bvec3){1, 1, 1}));
     sc_bvec2 beq = sc_bvec2_equal((sc_bvec2){true, false}, (sc_bvec2){true, true});
     assert_true(beq.x && !beq.y);
