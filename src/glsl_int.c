@@ -12,33 +12,18 @@ static const uint32_t exponent_mask = 0x7f800000u, magnitude_mask = 0x7fffffffu;
 bool sc_isnanf(float x) { return (sc_float_bits_to_uint(x) & magnitude_mask) > exponent_mask; }
 bool sc_isinff(float x) { return (sc_float_bits_to_uint(x) & magnitude_mask) == exponent_mask; }
 
-uint32_t sc_float_bits_to_uint(float x)
-{
-    uint32_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    return bits;
-}
-
-float sc_uint_bits_to_float(uint32_t bits)
-{
-    float x;
-    memcpy(&x, &bits, sizeof x);
-    return x;
-}
-
-int32_t sc_float_bits_to_int(float x)
-{
-    int32_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    return bits;
-}
-
-float sc_int_bits_to_float(int32_t bits)
-{
-    float x;
-    memcpy(&x, &bits, sizeof x);
-    return x;
-}
+/* The bit casts: every bit kept (float, int32_t and uint32_t have 4 bytes). */
+#define BIT_CAST(name, From, To)                                                                   \
+    To name(From from)                                                                             \
+    {                                                                                              \
+        To to;                                                                                     \
+        memcpy(&to, &from, sizeof to);                                                             \
+        return to;                                                                                 \
+    }
+BIT_CAST(sc_float_bits_to_uint, float, uint32_t)
+BIT_CAST(sc_float_bits_to_int, float, int32_t)
+BIT_CAST(sc_uint_bits_to_float, uint32_t, float)
+BIT_CAST(sc_int_bits_to_float, int32_t, float)
 
 /* ---- packing (§8.4) ---- */
 

@@ -17,19 +17,13 @@
 
 #include "shadecalc/glsl_int.h"
 
-static float float_of(uint32_t bits)
-{
-    float x;
-    memcpy(&x, &bits, sizeof x);
-    return x;
-}
-
-static uint32_t bits_of(float x)
-{
-    uint32_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    return bits;
-}
+/* Bit patterns through a union (the library copies bytes) */
+typedef union {
+    uint32_t u;
+    float f;
+} pun;
+static float float_of(uint32_t bits) { return (pun){.u = bits}.f; }
+static uint32_t bits_of(float x) { return (pun){.f = x}.u; }
 
 /* ---- isnan, isinf, bit casts ---- */
 
