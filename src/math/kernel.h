@@ -2,7 +2,8 @@
  * the float argument and rounds once at the end, with range reduction and polynomials written
  * so that a SIMD version can follow them lane for lane (selects instead of branches in the main
  * path, no tables). The double cores are shared: log2 by log, log2 and pow; exp2 by exp, exp2
- * and pow; atan by atan, atan2, asin and acos. */
+ * and pow (and exp by sinh, cosh, tanh); log and its atanh series by asinh, acosh, atanh; atan
+ * by atan, atan2, asin and acos. */
 #ifndef SHADECALC_MATH_KERNEL_H
 #define SHADECALC_MATH_KERNEL_H
 
