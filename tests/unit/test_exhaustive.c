@@ -193,7 +193,7 @@ static void pow_rounds_exact_midpoints(void **state)
     assert_true(sc_powf(-4097.0f, 3.0f) == (float)(-4097.0 * 4097.0 * 4097.0));
 }
 
-/* The inputs of log and atan that make exhaustive found rounded the wrong way (their tables
+/* The inputs of log, atan, asinh and acosh that make exhaustive found rounded the wrong way (their tables
  * of hard cases): MPFR's correctly rounded binary32 is the reference. */
 static void check_hard_case(const char *name, uint32_t bits, double bound)
 {
@@ -214,6 +214,12 @@ static void hard_cases_round_correctly(void **state)
     check_hard_case("log", 0x6f31a8ec, 0x1p-48);
     check_hard_case("atan", 0x3d8d6b23, 0x1p-47);
     check_hard_case("atan", 0xbd8d6b23, 0x1p-47);
+    check_hard_case("asinh", 0x4bdd65a5, 0x1p-47);
+    check_hard_case("asinh", 0xcbdd65a5, 0x1p-47);
+    check_hard_case("asinh", 0x655890d3, 0x1p-47);
+    check_hard_case("asinh", 0x6eb1a8ec, 0x1p-47);
+    check_hard_case("acosh", 0x655890d3, 0x1p-47);
+    check_hard_case("acosh", 0x6eb1a8ec, 0x1p-47);
 }
 
 /* The hyperbolic functions at their extremes and around every switch point of their methods
