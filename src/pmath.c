@@ -38,6 +38,12 @@ SC_P_FN1(exp2, exp2, sc_exp2f)
 SC_P_FN1(log2, log2, sc_log2f)
 SC_P_FN1(sqrt, sqrt, sc_sqrtf)
 SC_P_FN1(inversesqrt, inversesqrt, sc_inversesqrtf)
+SC_P_FN1(sinh, sinh, sc_sinhf)
+SC_P_FN1(cosh, cosh, sc_coshf)
+SC_P_FN1(tanh, tanh, sc_tanhf)
+SC_P_FN1(asinh, asinh, sc_asinhf)
+SC_P_FN1(acosh, acosh, sc_acoshf)
+SC_P_FN1(atanh, atanh, sc_atanhf)
 SC_P_FN2(pow, pow, sc_powf)
 SC_P_FN2(atan2, atan2, sc_atan2f)
 
@@ -74,6 +80,9 @@ SC_P_FN1(abs, fabs, sc_absf)
 SC_P_FN1(sign, sign, sc_signf)
 SC_P_FN1(floor, floor, sc_floorf)
 SC_P_FN1(ceil, ceil, sc_ceilf)
+SC_P_FN1(trunc, trunc, sc_truncf)
+SC_P_FN1(round, nearbyint, sc_roundf) /* halves to even in the default rounding mode */
+SC_P_FN1(roundeven, nearbyint, sc_roundevenf)
 SC_P_FN1(fract, fract, sc_fractf)
 SC_P_FN2(mod, mod, sc_modf)
 SC_P_FN2(min, min, sc_minf)
@@ -82,3 +91,12 @@ SC_P_FN2(step, step, sc_stepf)
 SC_P_FN3(clamp, clamp, sc_clampf)
 SC_P_FN3(mix, mix, sc_mixf)
 SC_P_FN3(smoothstep, smoothstep, sc_smoothstepf)
+
+double sc_p_modf(sc_prec p, double x, double *whole)
+{
+    if (p == SC_DOUBLE)
+        return modf(x, whole);
+    float w, fraction = sc_modff((float)x, &w);
+    *whole = sc_round(p, (double)w);
+    return sc_round(p, (double)fraction);
+}

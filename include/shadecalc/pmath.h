@@ -12,10 +12,12 @@
  *
  *   arithmetic     sc_p_add sc_p_sub sc_p_mul sc_p_div sc_p_neg
  *   one argument   sc_p_sin sc_p_cos sc_p_tan sc_p_asin sc_p_acos sc_p_atan sc_p_exp sc_p_log
- *                  sc_p_exp2 sc_p_log2 sc_p_sqrt sc_p_inversesqrt
+ *                  sc_p_exp2 sc_p_log2 sc_p_sqrt sc_p_inversesqrt sc_p_sinh sc_p_cosh sc_p_tanh
+ *                  sc_p_asinh sc_p_acosh sc_p_atanh
  *   two arguments  sc_p_pow sc_p_atan2
  *   common         sc_p_radians sc_p_degrees sc_p_abs sc_p_sign sc_p_floor sc_p_ceil sc_p_fract
- *                  sc_p_mod sc_p_min sc_p_max sc_p_step sc_p_clamp sc_p_mix sc_p_smoothstep
+ *                  sc_p_trunc sc_p_round sc_p_roundeven sc_p_modf sc_p_mod sc_p_min sc_p_max
+ *                  sc_p_step sc_p_clamp sc_p_mix sc_p_smoothstep
  *   geometric      sc_p_dot sc_p_length sc_p_distance sc_p_normalize sc_p_cross sc_p_reflect
  *                  sc_p_refract sc_p_faceforward   (vectors as arrays of n doubles, n = 1..4)
  *
@@ -57,6 +59,12 @@ double sc_p_exp2(sc_prec p, double x);
 double sc_p_log2(sc_prec p, double x);
 double sc_p_sqrt(sc_prec p, double x);
 double sc_p_inversesqrt(sc_prec p, double x);
+double sc_p_sinh(sc_prec p, double x);
+double sc_p_cosh(sc_prec p, double x);
+double sc_p_tanh(sc_prec p, double x);
+double sc_p_asinh(sc_prec p, double x);
+double sc_p_acosh(sc_prec p, double x);
+double sc_p_atanh(sc_prec p, double x);
 double sc_p_pow(sc_prec p, double x, double y);
 double sc_p_atan2(sc_prec p, double y, double x);
 
@@ -67,6 +75,11 @@ double sc_p_sign(sc_prec p, double x);
 double sc_p_floor(sc_prec p, double x);
 double sc_p_ceil(sc_prec p, double x);
 double sc_p_fract(sc_prec p, double x);
+double sc_p_trunc(sc_prec p, double x);
+double sc_p_round(sc_prec p, double x); /* halves to even, as roundEven (shadecalc/glsl.h) */
+double sc_p_roundeven(sc_prec p, double x);
+/* GLSL modf: returns the fraction of x and writes its whole part to *whole, both in p. */
+double sc_p_modf(sc_prec p, double x, double *whole);
 double sc_p_mod(sc_prec p, double x, double y);
 double sc_p_min(sc_prec p, double x, double y);
 double sc_p_max(sc_prec p, double x, double y);

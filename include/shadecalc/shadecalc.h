@@ -15,6 +15,7 @@
 #include "shadecalc/expr.h"
 #include "shadecalc/file.h"
 #include "shadecalc/glsl.h"
+#include "shadecalc/glsl_int.h"
 #include "shadecalc/image.h"
 #include "shadecalc/lang.h"
 #include "shadecalc/light.h"

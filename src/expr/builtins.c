@@ -38,6 +38,8 @@ typedef struct {
 static const char *log_domain(const double *a) { return a[0] <= 0.0 ? "x <= 0" : NULL; }
 static const char *sqrt_domain(const double *a) { return a[0] < 0.0 ? "x < 0" : NULL; }
 static const char *asin_domain(const double *a) { return fabs(a[0]) > 1.0 ? "|x| > 1" : NULL; }
+static const char *acosh_domain(const double *a) { return a[0] < 1.0 ? "x < 1" : NULL; }
+static const char *atanh_domain(const double *a) { return fabs(a[0]) >= 1.0 ? "|x| >= 1" : NULL; }
 static const char *pow_domain(const double *a)
 {
     if (a[0] < 0.0)
@@ -145,6 +147,12 @@ static const builtin builtins[] = {
     {"acos", "G", 'G', sc_p_acos, 0, 0, asin_domain, 0},
     {"atan", "G", 'G', sc_p_atan, 0, 0, 0, 0},
     {"atan", "GG", 'G', 0, sc_p_atan2, 0, atan2_domain, 0},
+    {"sinh", "G", 'G', sc_p_sinh, 0, 0, 0, 0},
+    {"cosh", "G", 'G', sc_p_cosh, 0, 0, 0, 0},
+    {"tanh", "G", 'G', sc_p_tanh, 0, 0, 0, 0},
+    {"asinh", "G", 'G', sc_p_asinh, 0, 0, 0, 0},
+    {"acosh", "G", 'G', sc_p_acosh, 0, 0, acosh_domain, 0},
+    {"atanh", "G", 'G', sc_p_atanh, 0, 0, atanh_domain, 0},
     {"pow", "GG", 'G', 0, sc_p_pow, 0, pow_domain, 0},
     {"exp", "G", 'G', sc_p_exp, 0, 0, 0, 0},
     {"log", "G", 'G', sc_p_log, 0, 0, log_domain, 0},
@@ -156,6 +164,9 @@ static const builtin builtins[] = {
     {"sign", "G", 'G', sc_p_sign, 0, 0, 0, 0},
     {"floor", "G", 'G', sc_p_floor, 0, 0, 0, 0},
     {"ceil", "G", 'G', sc_p_ceil, 0, 0, 0, 0},
+    {"trunc", "G", 'G', sc_p_trunc, 0, 0, 0, 0},
+    {"round", "G", 'G', sc_p_round, 0, 0, 0, 0},
+    {"roundEven", "G", 'G', sc_p_roundeven, 0, 0, 0, 0},
     {"fract", "G", 'G', sc_p_fract, 0, 0, 0, 0},
     {"mod", "Gg", 'G', 0, sc_p_mod, 0, 0, 0},
     {"min", "Gg", 'G', 0, sc_p_min, 0, 0, 0},

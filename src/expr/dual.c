@@ -170,6 +170,36 @@ static void d_atan(const double *a, double f, double *df)
     (void)f;
     df[0] = 1.0 / (1.0 + a[0] * a[0]);
 }
+static void d_sinh(const double *a, double f, double *df)
+{
+    (void)f;
+    df[0] = cosh(a[0]);
+}
+static void d_cosh(const double *a, double f, double *df)
+{
+    (void)f;
+    df[0] = sinh(a[0]);
+}
+static void d_tanh(const double *a, double f, double *df)
+{
+    (void)a;
+    df[0] = 1.0 - f * f;
+}
+static void d_asinh(const double *a, double f, double *df)
+{
+    (void)f;
+    df[0] = 1.0 / sqrt(a[0] * a[0] + 1.0);
+}
+static void d_acosh(const double *a, double f, double *df)
+{
+    (void)f;
+    df[0] = 1.0 / sqrt((a[0] - 1.0) * (a[0] + 1.0));
+}
+static void d_atanh(const double *a, double f, double *df)
+{
+    (void)f;
+    df[0] = 1.0 / ((1.0 - a[0]) * (1.0 + a[0]));
+}
 static void d_exp(const double *a, double f, double *df)
 {
     (void)a;
@@ -443,11 +473,16 @@ static const derivative derivatives[] = {
     {"tan", 1, d_tan, 0},           {"asin", 1, d_asin, 0},
     {"acos", 1, d_acos, 0},         {"atan", 1, d_atan, 0},
     {"atan", 2, d_atan2, 0},        {"pow", 2, d_pow, 0},
+    {"sinh", 1, d_sinh, 0},         {"cosh", 1, d_cosh, 0},
+    {"tanh", 1, d_tanh, 0},         {"asinh", 1, d_asinh, 0},
+    {"acosh", 1, d_acosh, 0},       {"atanh", 1, d_atanh, 0},
     {"exp", 1, d_exp, 0},           {"log", 1, d_log, 0},
     {"exp2", 1, d_exp2, 0},         {"log2", 1, d_log2, 0},
     {"sqrt", 1, d_sqrt, 0},         {"inversesqrt", 1, d_inversesqrt, 0},
     {"abs", 1, d_abs, 0},           {"sign", 1, d_zero, 0},
     {"floor", 1, d_zero, 0},        {"ceil", 1, d_zero, 0},
+    {"trunc", 1, d_zero, 0},        {"round", 1, d_zero, 0},
+    {"roundEven", 1, d_zero, 0},
     {"fract", 1, d_one, 0},         {"mod", 2, d_mod, 0},
     {"min", 2, d_min, 0},           {"max", 2, d_max, 0},
     {"clamp", 3, d_clamp, 0},       {"mix", 3, d_mix, 0},

@@ -28,6 +28,12 @@ const sc_accuracy_row sc_accuracy_table[] = {
     {"sqrt", 1, sc_sqrtf, 0, sqrt, 0, {0, 0},    {FLT_MAX, 0}, 0, "x >= 0", 0.5},
     {"inversesqrt", 1, sc_inversesqrtf, 0, inversesqrt, 0, {0, 0}, {FLT_MAX, 0}, 0, "x > 0",
      1.0},
+    {"sinh",  1, sc_sinhf,  0, sinh,  0, {-FLT_MAX, 0}, {FLT_MAX, 0}, 0, "all x", 1.0},
+    {"cosh",  1, sc_coshf,  0, cosh,  0, {-FLT_MAX, 0}, {FLT_MAX, 0}, 0, "all x", 1.0},
+    {"tanh",  1, sc_tanhf,  0, tanh,  0, {-FLT_MAX, 0}, {FLT_MAX, 0}, 0, "all x", 1.0},
+    {"asinh", 1, sc_asinhf, 0, asinh, 0, {-FLT_MAX, 0}, {FLT_MAX, 0}, 0, "all x", 1.0},
+    {"acosh", 1, sc_acoshf, 0, acosh, 0, {1, 0},   {FLT_MAX, 0}, 0, "x >= 1", 1.0},
+    {"atanh", 1, sc_atanhf, 0, atanh, 0, {-1, 0},  {1, 0},     0, "-1 <= x <= 1", 1.0},
 };
 /* clang-format on */
 const int sc_accuracy_count = (int)(sizeof sc_accuracy_table / sizeof sc_accuracy_table[0]);

@@ -1,8 +1,8 @@
 /* The GLSL ES 3.00 common functions (§8.3) and angle conversions (§8.1) in binary32, each the
  * specification's defining formula evaluated in float, every operation rounded once
- * (shadecalc/glsl.h). abs, sign, floor, ceil, min, max, clamp, step are exact; radians and
- * degrees multiply by the float constants π/180 and 180/π (within 1.5 ULP of x·π/180); fract,
- * mod, mix, smoothstep inherit the roundings of their formulas, as GLSL ES specifies.
+ * (shadecalc/glsl.h). abs, sign, floor, ceil, trunc, round, roundEven, modf, min, max, clamp,
+ * step are exact; radians and degrees multiply by the float constants π/180 and 180/π (within
+ * 1.5 ULP of x·π/180); fract, mod, mix, smoothstep inherit the roundings of their formulas, as GLSL ES specifies.
  * Results where GLSL ES leaves the input undefined or unspecified (the formula's IEEE value):
  *   sign(±0) = ±0 (0·x keeps the zero's sign; equal to 0.0), sign(NaN) = NaN
  *   min(x, y) = y < x ? y : x, max(x, y) = x < y ? y : x: equal operands (±0) and a NaN y give
@@ -15,6 +15,10 @@
  *   step(edge, x) = x < edge ? 0 : 1: step(e, e) = 1, and 1 when either is NaN
  *   smoothstep with edge0 > edge1: the mirrored curve; edge0 = edge1: 0 below, 1 above, NaN at
  *     x = edge0 (0/0)
+ *   round(x) = roundEven(x): halves go to the even integer (GLSL ES: either direction), so
+ *     round(2.5) = 2, round(−0.5) = −0; the sign of x is kept (round(−0.3) = −0)
+ *   modf(x, i): i = trunc(x), the fraction x − i carries x's sign (modf(−3) = −0); ±Inf gives
+ *     ±0 and i = ±Inf (C99 modff)
  */
 #include <math.h>
 
@@ -38,4 +42,23 @@ float sc_smoothstepf(float edge0, float edge1, float x)
 {
     float t = sc_clampf((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);
+}
+
+float sc_truncf(float x) { return truncf(x); }
+
+/* Nearest integer, halves to the even one, whatever the current rounding mode: x − trunc(x)
+ * is exact, and |x| >= 2^23 (and ±Inf, NaN) is already its own trunc. */
+float sc_roundevenf(float x)
+{
+    float whole = truncf(x), away = copysignf(1.0f, x), part = fabsf(x - whole);
+    int odd = fmodf(whole, 2.0f) != 0.0f;
+    return part > 0.5f || (part == 0.5f && odd) ? whole + away : whole;
+}
+
+float sc_roundf(float x) { return sc_roundevenf(x); }
+
+float sc_modff(float x, float *whole)
+{
+    *whole = truncf(x);
+    return isinf(x) ? copysignf(0.0f, x) : copysignf(x - *whole, x);
 }

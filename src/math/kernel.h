@@ -2,7 +2,8 @@
  * the float argument and rounds once at the end, with range reduction and polynomials written
  * so that a SIMD version can follow them lane for lane (selects instead of branches in the main
  * path, no tables). The double cores are shared: log2 by log, log2 and pow; exp2 by exp, exp2
- * and pow; atan by atan, atan2, asin and acos. */
+ * and pow (and exp by sinh, cosh, tanh); log and its atanh series by asinh, acosh, atanh; atan
+ * by atan, atan2, asin and acos. */
 #ifndef SHADECALC_MATH_KERNEL_H
 #define SHADECALC_MATH_KERNEL_H
 
@@ -75,6 +76,14 @@ double sc_k_exp2(double x);
 /* log2(x) for positive, finite, normal double x; absolute error below 2^-52·max(1, |log2 x|)
  * (log.c). */
 double sc_k_log2(double x);
+/* ln(x) for positive, finite, normal double x; relative error below 2^-48 (log.c: 31.2u for
+ * x outside [√½, √2), 26.2u inside). */
+double sc_k_log(double x);
+/* atanh(s) = s + s³/3 + ... + s^23/23 for |s| <= 0.1716; with s exact, relative error below
+ * 25u < 2^-48.3 (Horner's 22u, the coefficients' u, z = s² rounded u·0.01, all on a sum >= 1;
+ * the product u; truncation
+ * 2^-65) (log.c). */
+double sc_k_atanh_series(double s);
 /* atan(x) for any finite double x; relative error below 2^-52 (atan.c). */
 double sc_k_atan(double x);
 /* atan2(y, x) for doubles with every C99 Annex F special case (atan.c). */
@@ -88,7 +97,8 @@ double sc_k_atan2(double y, double x);
 #define SC_K_CORE1(name) double sc_k_##name##_core(float x);
 SC_K_CORE1(exp) SC_K_CORE1(exp2) SC_K_CORE1(log) SC_K_CORE1(log2) SC_K_CORE1(sin) SC_K_CORE1(cos)
 SC_K_CORE1(tan) SC_K_CORE1(asin) SC_K_CORE1(acos) SC_K_CORE1(atan) SC_K_CORE1(sqrt)
-SC_K_CORE1(inversesqrt)
+SC_K_CORE1(inversesqrt) SC_K_CORE1(sinh) SC_K_CORE1(cosh) SC_K_CORE1(tanh) SC_K_CORE1(asinh)
+SC_K_CORE1(acosh) SC_K_CORE1(atanh)
 #undef SC_K_CORE1
 double sc_k_pow_core(float x, float y);
 double sc_k_atan2_core(float y, float x);

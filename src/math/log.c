@@ -35,12 +35,10 @@ static const double inv_ln2 = 1.4426950408889634074;
 static const double inv_odd[12] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,  1.0 / 11,
                                    1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21, 1.0 / 23};
 
+double sc_k_atanh_series(double s) { return s * sc_k_horner(s * s, inv_odd, 12); }
+
 /* Natural log of m in [√½, √2). */
-static double log_reduced(double m)
-{
-    double s = (m - 1.0) / (m + 1.0);
-    return 2.0 * s * sc_k_horner(s * s, inv_odd, 12);
-}
+static double log_reduced(double m) { return 2.0 * sc_k_atanh_series((m - 1.0) / (m + 1.0)); }
 
 /* Splits positive normal x into m in [√½, √2) and the exponent e. */
 static double split(double x, int *e)
@@ -51,6 +49,13 @@ static double split(double x, int *e)
     int big = m > 1.4142135623730951;
     *e = ex + big;
     return big ? m * 0.5 : m;
+}
+
+double sc_k_log(double x)
+{
+    int e;
+    double m = split(x, &e);
+    return (double)e * ln2 + log_reduced(m);
 }
 
 double sc_k_log2(double x)
@@ -91,9 +96,7 @@ double sc_k_log_core(float x)
     double special;
     if (log_special(x, &special))
         return special;
-    int e;
-    double m = split((double)x, &e);
-    double r = (double)e * ln2 + log_reduced(m);
+    double r = sc_k_log((double)x);
     return sc_k_near_midpoint(r, 0x1p-47) ? sc_k_lookup_hard(log_hard_cases, 3, x, r) : r;
 }
 

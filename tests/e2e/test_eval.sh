@@ -23,6 +23,28 @@ expect "double shortest decimal"  0 '0.30000000000000004' '' -- eval -p double '
 expect "highp sum"                0 '0.3' '' -- eval '0.1 + 0.2'
 expect "negative zero kept"       0 '-0' '' -- eval -- '-0.0'
 
+# hyperbolic functions in every precision (libm's binary64 values, rounded to binary32, then
+# to binary16 or lowp), with vector overloads
+set -- 'sinh(1.0)' 'vec2(cosh(1.0), tanh(0.5))' 'vec3(asinh(1.0), acosh(2.0), atanh(0.5))'
+expect "hyperbolic double"        0 '1.1752011936438014
+vec2(1.5430806348152437, 0.46211715726000974)
+vec3(0.881373587019543, 1.3169578969248166, 0.5493061443340548)' '' -- eval -p double "$@"
+expect "hyperbolic highp"         0 '1.1752012
+vec2(1.5430807, 0.46211717)
+vec3(0.8813736, 1.316958, 0.54930615)' '' -- eval "$@"
+expect "hyperbolic mediump"       0 '1.175
+vec2(1.543, 0.4622)
+vec3(0.8813, 1.317, 0.5493)' '' -- eval -p mediump "$@"
+expect "hyperbolic lowp"          0 '1.176
+vec2(1.543, 0.46)
+vec3(0.883, 1.316, 0.55)' '' -- eval -p lowp "$@"
+expect "sinh tiny is x, overflow" 0 'vec3(-1e-30, inf, 1)' '' -- eval 'vec3(sinh(-1e-30), cosh(90.0), tanh(10.0))'
+expect "acosh domain warning"     0 'nan' '~acosh: x < 1 is outside the GLSL ES domain' -- eval 'acosh(0.5)'
+expect "atanh pole"               0 '-inf' '~atanh: |x| >= 1 is outside the GLSL ES domain' -- eval 'atanh(-1.0)'
+expect "round halves to even"     0 'vec4(2, -2, 4, -0)' '' -- eval 'round(vec4(2.5, -2.5, 3.5, -0.3))'
+expect "roundEven and trunc"      0 'vec3(2, -2, 0)' '' -- eval 'vec3(roundEven(1.5), trunc(-2.7), trunc(0.9))'
+expect "modf is not a function"   2 '' "error: column 1: unknown function 'modf' (did you mean 'mod'?)" -- eval 'modf(1.5)'
+
 # output formats
 expect "hex highp"                0 '0x3fb504f3' '' -- eval --hex 'pow(2.0, 0.5)'
 expect "hex mediump"              0 'vec2(0x3c00, 0xc000)' '' -- eval --hex -p mediump 'vec2(1, -2)'

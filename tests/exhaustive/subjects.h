@@ -6,7 +6,8 @@
 
 #include "checker.h"
 
-/* exp exp2 log log2 sin cos tan asin acos atan sqrt inversesqrt, then pow and atan2 */
+/* exp exp2 log log2 sin cos tan asin acos atan sqrt inversesqrt sinh cosh tanh asinh acosh atanh,
+ * then pow and atan2 */
 extern const exh_subject exh_highp[];
 extern const int exh_highp_count;
 

@@ -8,6 +8,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -254,6 +255,64 @@ static void smoothstep_with_reversed_or_equal_edges_is_the_formula(void **state)
     assert_true(isnan(sc_smoothstepf(1.0f, 1.0f, 1.0f)));
 }
 
+/* ---- trunc, round, roundEven, modf ------------------------------------------------------ */
+
+static int same_float(float a, float b)
+{
+    return (isnan(a) && isnan(b)) || (a == b && signbit(a) == signbit(b));
+}
+
+/* Against C99's truncf, nearbyintf (halves to even in the default rounding mode) and modff on
+ * every 257th bit pattern (every binade, both signs, NaN and Inf patterns). */
+static void trunc_round_modf_match_c99_on_every_257th_float(void **state)
+{
+    (void)state;
+    for (uint64_t u = 0; u < (1ULL << 32); u += 257) {
+        uint32_t bits = (uint32_t)u;
+        float x, whole, want_whole;
+        memcpy(&x, &bits, sizeof x);
+        float fraction = sc_modff(x, &whole), want_fraction = modff(x, &want_whole);
+        if (!same_float(sc_truncf(x), truncf(x)) || !same_float(sc_roundevenf(x), nearbyintf(x)) ||
+            !same_float(sc_roundf(x), nearbyintf(x)) || !same_float(fraction, want_fraction) ||
+            !same_float(whole, want_whole))
+            fail_msg("x = %a: trunc %a round %a roundEven %a modf %a, %a", (double)x,
+                     (double)sc_truncf(x), (double)sc_roundf(x), (double)sc_roundevenf(x),
+                     (double)fraction, (double)whole);
+    }
+}
+
+/* Halves go to the even neighbour, the sign of x stays (GLSL ES: round may go either way; ours
+ * is roundEven). */
+static void halves_round_to_even(void **state)
+{
+    (void)state;
+    static const float x[] = {0.5f,  1.5f,       2.5f,           -0.5f,      -1.5f,   -2.5f,
+                              -0.3f, 8388607.5f, 0x1.fffffep-2f, 4194304.5f, 0x1p23f, 1e30f};
+    static const float want[] = {0.0f,  2.0f,       2.0f, -0.0f,      -2.0f,   -2.0f,
+                                 -0.0f, 8388608.0f, 0.0f, 4194304.0f, 0x1p23f, 1e30f};
+    for (size_t i = 0; i < sizeof x / sizeof x[0]; i++) {
+        assert_true(same_float(sc_roundevenf(x[i]), want[i]));
+        assert_true(same_float(sc_roundf(x[i]), want[i]));
+    }
+    assert_true(isnan(sc_roundf(NAN)) && sc_roundf(-INFINITY) == -INFINITY);
+}
+
+/* modf: both parts carry the sign of x; an infinity is all whole part. */
+static void modf_parts_carry_the_sign_of_x(void **state)
+{
+    (void)state;
+    float whole;
+    assert_true(same_float(sc_modff(-2.75f, &whole), -0.75f) && whole == -2.0f);
+    assert_negative_zero(sc_modff(-3.0f, &whole));
+    assert_true(whole == -3.0f);
+    assert_negative_zero(sc_modff(-INFINITY, &whole));
+    assert_true(whole == -INFINITY);
+    assert_true(same_float(sc_modff(0x1p-149f, &whole), 0x1p-149f));
+    assert_positive_zero(whole);
+    assert_true(isnan(sc_modff(NAN, &whole)) && isnan(whole));
+    assert_negative_zero(sc_truncf(-0.9f));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -273,6 +332,9 @@ int main(void)
         cmocka_unit_test(step_is_zero_below_the_edge_and_one_from_it),
         cmocka_unit_test(smoothstep_is_the_hermite_formula),
         cmocka_unit_test(smoothstep_with_reversed_or_equal_edges_is_the_formula),
+        cmocka_unit_test(trunc_round_modf_match_c99_on_every_257th_float),
+        cmocka_unit_test(halves_round_to_even),
+        cmocka_unit_test(modf_parts_carry_the_sign_of_x),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -192,8 +193,9 @@ static void pow_rounds_exact_midpoints(void **state)
     assert_true(sc_powf(-4097.0f, 3.0f) == (float)(-4097.0 * 4097.0 * 4097.0));
 }
 
-/* The inputs of exp, exp2, log, sin, cos and atan that make exhaustive found rounded the wrong way (their tables
- * of hard cases): MPFR's correctly rounded binary32 is the reference. */
+/* The inputs of exp, exp2, log, sin, cos, atan, asinh and acosh that make exhaustive found
+ * rounded the wrong way (their tables of hard cases): MPFR's correctly rounded binary32 is the
+ * reference. */
 static void check_hard_case(const char *name, uint32_t bits, double bound)
 {
     const exh_subject *s = highp(name);
@@ -222,6 +224,39 @@ static void hard_cases_round_correctly(void **state)
     check_hard_case("cos", 0xe115cb11, 0x1p-47 + 0x1p-99);
     check_hard_case("atan", 0x3d8d6b23, 0x1p-47);
     check_hard_case("atan", 0xbd8d6b23, 0x1p-47);
+    check_hard_case("asinh", 0x4bdd65a5, 0x1p-47);
+    check_hard_case("asinh", 0xcbdd65a5, 0x1p-47);
+    check_hard_case("asinh", 0x655890d3, 0x1p-47);
+    check_hard_case("asinh", 0x6eb1a8ec, 0x1p-47);
+    check_hard_case("acosh", 0x655890d3, 0x1p-47);
+    check_hard_case("acosh", 0x6eb1a8ec, 0x1p-47);
+}
+
+/* The hyperbolic functions at their extremes and around every switch point of their methods
+ * (sinh.c, asinh.c) and of binary32 (overflow of sinh and cosh, saturation of tanh): each result
+ * is MPFR's correctly rounded binary32 (±0 and NaN included). */
+static void hyperbolic_extremes_round_correctly(void **state)
+{
+    (void)state;
+    static const char *const names[] = {"sinh", "cosh", "tanh", "asinh", "acosh", "atanh"};
+    static const float points[] = {
+        0.0f,  0x1p-149f, 0x1.fffffcp-127f, 0x1p-126f, 0x1p-12f, 0.17f,   0.35f,   1.0f,
+        1.06f, 9.011f,    89.4159f,         694.0f,    1e10f,    FLT_MAX, INFINITY};
+    for (size_t n = 0; n < sizeof names / sizeof names[0]; n++) {
+        const exh_subject *s = highp(names[n]);
+        for (size_t i = 0; i < sizeof points / sizeof points[0]; i++)
+            for (int sign = -1; sign <= 1; sign += 2) {
+                float x = (float)sign * points[i];
+                for (int k = 0; k < 64; k++, x = nextafterf(x, (float)sign * INFINITY)) {
+                    double exact;
+                    float want = exh_mpfr_round32(s, x, 0.0f, &exact), got = s->f1(x);
+                    if (!exh_same(got, want))
+                        fail_msg("%s(%a) = %a, correctly rounded %a", s->name, (double)x,
+                                 (double)got, (double)want);
+                }
+            }
+        assert_true(exh_same(s->f1(NAN), NAN));
+    }
 }
 
 int main(void)
@@ -235,6 +270,7 @@ int main(void)
         cmocka_unit_test(a_mediump_not_from_highp_is_caught),
         cmocka_unit_test(pow_rounds_exact_midpoints),
         cmocka_unit_test(hard_cases_round_correctly),
+        cmocka_unit_test(hyperbolic_extremes_round_correctly),
     };
     return cmocka_run_group_tests_name("exhaustive checker", tests, NULL, NULL);
 }

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <fenv.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -81,12 +82,34 @@ static void special_values(void **state)
     assert_true(sc_sqrtf(-0.0f) == 0.0f && signbit(sc_sqrtf(-0.0f)));
 }
 
+/* sinh, tanh, asinh, atanh of a tiny x are x exactly (x³ is far below half an ULP of x): the
+ * result is exact, so no underflow is signalled, even for subnormal x (IEEE 754 signals
+ * underflow for a tiny inexact result only). */
+static void tiny_hyperbolic_arguments_are_exact_without_underflow(void **state)
+{
+    (void)state;
+    static const float tiny[] = {0x1p-149f, 0x1.fffffcp-127f, 0x1p-126f, 1e-30f, 0x1p-13f};
+    float (*const odd[])(float) = {sc_sinhf, sc_tanhf, sc_asinhf, sc_atanhf};
+    for (size_t i = 0; i < sizeof tiny / sizeof tiny[0]; i++)
+        for (size_t f = 0; f < sizeof odd / sizeof odd[0]; f++)
+            for (int sign = -1; sign <= 1; sign += 2) {
+                float x = (float)sign * tiny[i];
+                feclearexcept(FE_ALL_EXCEPT);
+                float y = odd[f](x);
+                int underflow = fetestexcept(FE_UNDERFLOW);
+                if (y != x || underflow)
+                    fail_msg("function %zu at %a: %a, underflow %d", f, (double)x, (double)y,
+                             underflow != 0);
+            }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_stated_bound_holds),
         cmocka_unit_test(a_broken_kernel_is_caught),
         cmocka_unit_test(special_values),
+        cmocka_unit_test(tiny_hyperbolic_arguments_are_exact_without_underflow),
     };
     return cmocka_run_group_tests_name("math accuracy", tests, NULL, NULL);
 }
