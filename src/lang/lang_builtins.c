@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "lang/lang_internal.h"
+#include "shadecalc/glsl_int.h"
 
 typedef enum {
     F_LT,
@@ -173,44 +174,27 @@ int sc_lang_builtin_resolve(const char *name, int len, const sc_ltype *args, int
 
 /* ---- evaluation ---- */
 
-static uint32_t float_bits(double x)
-{
-    float f = (float)x;
-    uint32_t u;
-    memcpy(&u, &f, sizeof u);
-    return u;
-}
+/* The bit casts and the 2x16 packings are the library's (shadecalc/glsl_int.h). */
+static uint32_t float_bits(double x) { return sc_float_bits_to_uint((float)x); }
 
 static double bits_float(double x)
 {
-    uint32_t u = (uint32_t)((unsigned long long)(long long)x & 0xFFFFFFFFu);
-    float f;
-    memcpy(&f, &u, sizeof f);
-    return f;
+    return sc_uint_bits_to_float((uint32_t)((unsigned long long)(long long)x & 0xFFFFFFFFu));
 }
 
-static double clampd(double x, double lo, double hi) { return x < lo ? lo : x > hi ? hi : x; }
-
-/* One 16-bit field of a pack: NaN packs as 0. */
-static uint32_t pack16(family f, double c)
+static uint32_t pack2x16(family f, const double *a)
 {
-    if (f == F_PACK_HALF)
-        return sc_half_from_double(c);
-    if (isnan(c))
-        return 0;
-    /* the product in binary32 (exact in double, then rounded), then to the nearest integer */
+    sc_vec2 v = {(float)a[0], (float)a[1]};
     if (f == F_PACK_SNORM)
-        return (uint32_t)(int32_t)nearbyint((float)(clampd(c, -1.0, 1.0) * 32767.0)) & 0xFFFFu;
-    return (uint32_t)nearbyint((float)(clampd(c, 0.0, 1.0) * 65535.0));
+        return sc_pack_snorm2x16(v);
+    return f == F_PACK_UNORM ? sc_pack_unorm2x16(v) : sc_pack_half2x16(v);
 }
 
-static double unpack16(family f, uint32_t h)
+static sc_vec2 unpack2x16(family f, uint32_t u)
 {
-    if (f == F_UNPACK_HALF)
-        return sc_half_to_double((uint16_t)h);
     if (f == F_UNPACK_SNORM)
-        return clampd((double)(int16_t)(uint16_t)h / 32767.0, -1.0, 1.0);
-    return h / 65535.0;
+        return sc_unpack_snorm2x16(u);
+    return f == F_UNPACK_UNORM ? sc_unpack_unorm2x16(u) : sc_unpack_half2x16(u);
 }
 
 static double relational(family f, double a, double b)
@@ -255,11 +239,11 @@ void sc_lang_builtin_eval(int index, sc_prec p, const double *const *args, const
             any |= args[0][k] != 0.0, all &= args[0][k] != 0.0;
         out[0] = f == F_ANY ? any : all;
     } else if (f == F_PACK_SNORM || f == F_PACK_UNORM || f == F_PACK_HALF) {
-        out[0] = (double)(pack16(f, args[0][0]) | pack16(f, args[0][1]) << 16);
+        out[0] = (double)pack2x16(f, args[0]);
     } else if (f == F_UNPACK_SNORM || f == F_UNPACK_UNORM || f == F_UNPACK_HALF) {
-        uint32_t u = (uint32_t)args[0][0];
-        out[0] = sc_round(p, unpack16(f, u & 0xFFFFu));
-        out[1] = sc_round(p, unpack16(f, u >> 16));
+        sc_vec2 v = unpack2x16(f, (uint32_t)args[0][0]);
+        out[0] = sc_round(p, v.x);
+        out[1] = sc_round(p, v.y);
     } else {
         for (int k = 0; k < sc_ltype_size(result); k++) {
             double a[3] = {0, 0, 0};
