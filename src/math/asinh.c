@@ -75,7 +75,10 @@ double sc_k_asinh_core(float x)
         return (double)x; /* ±Inf, NaN */
     double root = sqrt(a * a + 1.0);
     double r = a < 0.35 ? log1p_small(a + a * a / (1.0 + root)) : sc_k_log(a + root);
-    return copysign(settled(r, asinh_hard_cases, N_ASINH_HARD, fabsf(x)), (double)x);
+    /* the hard cases are all above 2^24; below, the check's r·2^-47 would signal a spurious
+     * underflow for the tiny x whose result is x exactly */
+    double s = a > 0x1p24 ? settled(r, asinh_hard_cases, N_ASINH_HARD, fabsf(x)) : r;
+    return copysign(s, (double)x);
 }
 
 double sc_k_acosh_core(float x)
