@@ -193,8 +193,8 @@ static void pow_rounds_exact_midpoints(void **state)
     assert_true(sc_powf(-4097.0f, 3.0f) == (float)(-4097.0 * 4097.0 * 4097.0));
 }
 
-/* The inputs of exp, exp2, log, sin, cos, atan, asinh and acosh that make exhaustive found
- * rounded the wrong way (their tables of hard cases): MPFR's correctly rounded binary32 is the
+/* The inputs of exp, exp2, log, sin, cos, acos, atan, asinh and acosh that make exhaustive
+ * found rounded the wrong way (their tables of hard cases): MPFR's correctly rounded binary32 is the
  * reference. */
 static void check_hard_case(const char *name, uint32_t bits, double bound)
 {
@@ -222,6 +222,8 @@ static void hard_cases_round_correctly(void **state)
     check_hard_case("cos", 0xdf18b878, 0x1p-47 + 0x1p-99);
     check_hard_case("cos", 0x6115cb11, 0x1p-47 + 0x1p-99); /* x = 1.72699834e20 */
     check_hard_case("cos", 0xe115cb11, 0x1p-47 + 0x1p-99);
+    check_hard_case("acos", 0x328885a3, 0x1p-46); /* x = 1.58932547e-8 */
+    check_hard_case("acos", 0x39826222, 0x1p-46); /* x = 0.000248686469 */
     check_hard_case("atan", 0x3d8d6b23, 0x1p-47);
     check_hard_case("atan", 0xbd8d6b23, 0x1p-47);
     check_hard_case("asinh", 0x4bdd65a5, 0x1p-47);
