@@ -33,7 +33,8 @@
 #ifdef SC_HAVE_X86
 #define ROWS_WITH(entry, k, t, ...)                                                                \
     entry(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__) entry(k, t, SC_ISA_SSE41, sse41, __VA_ARGS__)  \
-        entry(k, t, SC_ISA_AVX2, avx2, __VA_ARGS__) entry(k, t, SC_ISA_AVX512, avx512, __VA_ARGS__)
+        entry(k, t, SC_ISA_AVX2, avx2, __VA_ARGS__)                                                \
+            entry(k, t, SC_ISA_AVX512, avx512, __VA_ARGS__)
 #else
 #define ROWS_WITH(entry, k, t, ...) entry(k, t, SC_ISA_SCALAR, scalar, __VA_ARGS__)
 #endif

@@ -70,7 +70,8 @@ static int parse_isas(char *s, options *o)
     for (int i = 0; i < n; i++) {
         sc_isa isa;
         if (sc_isa_parse(names[i], &isa) != 0) {
-            sc_error("bench: --isa: unknown instruction set '%s' (scalar, sse4.1, avx2, avx512)", names[i]);
+            sc_error("bench: --isa: unknown instruction set '%s' (scalar, sse4.1, avx2, avx512)",
+                     names[i]);
             return SC_EXIT_USAGE;
         }
         if (!sc_isa_supported(isa)) {

@@ -402,14 +402,17 @@ static inline vd rsqrt_d(vd x) { return vd_div(vd_set1(1.0), vd_sqrt(x)); }
 /* ---- exp2 and exp u1 in float lanes, where the FMA is a single rounding ---- */
 
 /* (2^f − 1)/f on [−1/2, 1/2], degree 6: relative fit error 1.7e-10 (mpmath chebyfit) */
-static const float exp2_q6[7] = {0.000015297323760701074f, 0.00015461444698569129f,
+static const float exp2_q6[7] = {0.000015297323760701074f,  0.00015461444698569129f,
                                  0.0013333502386162770741f, 0.0096180566785246380754f,
                                  0.055504108839096183929f,  0.24022650922288758071f,
                                  0.69314718055994530942f};
 /* (e^r − 1)/r on [−ln2/2, ln2/2] widened by 10^-4, degree 6: relative fit error 2.4e-10 */
-static const float exp_q6[7] = {0.00019899307482115443987f, 0.0013941138623396756287f,
-                                0.008333298443479888647f,   0.041666352534085763919f,
-                                0.16666666719088228652f,    0.50000000471994520251f,
+static const float exp_q6[7] = {0.00019899307482115443987f,
+                                0.0013941138623396756287f,
+                                0.008333298443479888647f,
+                                0.041666352534085763919f,
+                                0.16666666719088228652f,
+                                0.50000000471994520251f,
                                 1.0f};
 
 /* 2^x = 2^k (1 + f q(f)), k = rint(x), f = x − k exact: the last step is one FMA, so the

@@ -100,8 +100,8 @@ static int build_source(char *src, size_t size, const char *prelude, const captu
                      "%sout highp %s r0;\n%sout highp %s r1;\n%sout highp %s r2;\n"
                      "%sout highp %s r3;\n"
                      "void main() {\n  %s v = %s;\n",
-                     prelude, flat, out_type, flat, out_type, flat, out_type, flat, out_type,
-                     type, expr);
+                     prelude, flat, out_type, flat, out_type, flat, out_type, flat, out_type, type,
+                     expr);
     for (int col = 0; col < 4 && n > 0 && (size_t)n < size; col++) {
         const char *conv = c->kind == COMP_BOOL ? out_type : "";
         if (col >= c->columns)
@@ -185,8 +185,8 @@ static int run_program(GLuint prog, int rows, unsigned int *words)
     glDrawArrays(GL_POINTS, 0, 1);
     glEndTransformFeedback();
     glDisable(GL_RASTERIZER_DISCARD);
-    const void *p =
-        glMapBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, (GLsizeiptr)bytes, GL_MAP_READ_BIT);
+    const void *p = glMapBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, (GLsizeiptr)bytes,
+                                     GL_MAP_READ_BIT);
     int rc = p ? 0 : -1;
     if (p) {
         memcpy(words, p, bytes);
@@ -261,7 +261,7 @@ static int setup_context(void)
     if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, NULL, NULL) || !eglBindAPI(EGL_OPENGL_ES_API))
         return -1;
     static const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT,
-                                           EGL_SURFACE_TYPE, EGL_DONT_CARE, EGL_NONE};
+                                            EGL_SURFACE_TYPE, EGL_DONT_CARE, EGL_NONE};
     EGLConfig config;
     EGLint count = 0;
     if (!eglChooseConfig(dpy, config_attribs, &config, 1, &count) || count < 1)
