@@ -4,7 +4,7 @@
 
 # bench: empty lists, lists longer than the table, too many kernels, an unknown option
 expect "bench empty isa list"   2 '' 'error: bench: --isa: expected a list such as avx2,scalar' -- bench --isa ,
-expect "bench isa list too long" 2 '' 'error: bench: --isa: expected a list such as avx2,scalar' -- bench --isa scalar,scalar,scalar,scalar
+expect "bench isa list too long" 2 '' 'error: bench: --isa: expected a list such as avx2,scalar' -- bench --isa scalar,scalar,scalar,scalar,scalar
 expect "bench empty tier list"  2 '' 'error: bench: --tier: expected a list such as u1,bits12' -- bench --tier ,
 expect "bench five sizes"       2 '' 'error: bench: --n: expected at most 4 counts, such as 4096,8388608' -- bench --n 1,2,3,4,5
 kernels=$(i=0; while [ $i -lt 33 ]; do printf 'pow '; i=$((i + 1)); done)
