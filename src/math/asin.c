@@ -44,7 +44,7 @@ double sc_k_acos_core(float x)
 {
     double xd = (double)x;
     double r = sc_k_atan2(cosine_of_asin(xd), xd);
-    return sc_k_near_midpoint(r, 0x1p-46) ? sc_k_lookup_hard(acos_hard_cases, 2, x, r) : r;
+    return SC_K_SETTLE(acos_hard_cases, x, r, 0x1p-46);
 }
 
 float sc_asinf(float x) { return (float)sc_k_asin_core(x); }

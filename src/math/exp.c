@@ -72,7 +72,7 @@ static const sc_k_hard_case exp2_hard_cases[] = {
 double sc_k_exp2_core(float x)
 {
     double r = sc_k_exp2((double)x);
-    return sc_k_near_midpoint(r, 0x1p-47) ? sc_k_lookup_hard(exp2_hard_cases, 2, x, r) : r;
+    return SC_K_SETTLE(exp2_hard_cases, x, r, 0x1p-47);
 }
 /* The hard case of exp: make exhaustive found this one over all 2^32 inputs (the core rounds it
  * the wrong way); its value from MPFR at 300 bits: the midpoint's double plus one ULP. */
@@ -85,7 +85,7 @@ double sc_k_exp_core(float x)
 {
     double r = sc_k_exp2((double)x * log2e);
     double bound = 0x1p-47 + 0x1p-51 * fabs((double)x);
-    return sc_k_near_midpoint(r, bound) ? sc_k_lookup_hard(exp_hard_cases, 1, x, r) : r;
+    return SC_K_SETTLE(exp_hard_cases, x, r, bound);
 }
 
 float sc_exp2f(float x) { return (float)sc_k_exp2_core(x); }

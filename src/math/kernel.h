@@ -70,6 +70,13 @@ static inline double sc_k_lookup_hard(const sc_k_hard_case *table, int n, float 
     return r;
 }
 
+/* r, or x's value from its table when r, known to within eps·|r|, is too close to a midpoint
+ * to tell (the hard-case check every correctly rounded core ends with). */
+#define SC_K_SETTLE(table, x, r, eps)                                                              \
+    (sc_k_near_midpoint((r), (eps))                                                                \
+         ? sc_k_lookup_hard((table), (int)(sizeof(table) / sizeof((table)[0])), (x), (r))          \
+         : (r))
+
 /* 2^x for any double x (clamped to ±1000, beyond which every binary32 result is 0 or +Inf);
  * relative error below 2^-52 (exp2.c). */
 double sc_k_exp2(double x);

@@ -97,7 +97,7 @@ double sc_k_log_core(float x)
     if (log_special(x, &special))
         return special;
     double r = sc_k_log((double)x);
-    return sc_k_near_midpoint(r, 0x1p-47) ? sc_k_lookup_hard(log_hard_cases, 3, x, r) : r;
+    return SC_K_SETTLE(log_hard_cases, x, r, 0x1p-47);
 }
 
 float sc_log2f(float x) { return (float)sc_k_log2_core(x); }

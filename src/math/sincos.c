@@ -162,7 +162,7 @@ double sc_k_sin_core(float x)
 {
     reduced q = reduce(x);
     double r = sin_quadrant(q.r, q.quadrant);
-    return sc_k_near_midpoint(r, sincos_eps(r)) ? sc_k_lookup_hard(sin_hard_cases, 2, x, r) : r;
+    return SC_K_SETTLE(sin_hard_cases, x, r, sincos_eps(r));
 }
 
 /* The hard cases of cos (even: both signs of x), found and valued as sin's. */
@@ -177,7 +177,7 @@ double sc_k_cos_core(float x)
 {
     reduced q = reduce(x);
     double r = sin_quadrant(q.r, (q.quadrant + 1) & 3);
-    return sc_k_near_midpoint(r, sincos_eps(r)) ? sc_k_lookup_hard(cos_hard_cases, 4, x, r) : r;
+    return SC_K_SETTLE(cos_hard_cases, x, r, sincos_eps(r));
 }
 
 /* tan(x) = tan r in even quadrants, −cot r in odd ones. */
