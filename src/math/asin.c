@@ -35,7 +35,7 @@ double sc_k_asin_core(float x)
 
 /* The hard cases of acos: make exhaustive found these two over all 2^32 inputs (the core rounds
  * them the wrong way); values from MPFR at 300 bits: the midpoint's double plus one ULP. */
-static const sc_k_hard_case acos_hard_cases[] = {
+const sc_k_hard_case sc_k_acos_hard_cases[2] = {
     {0x328885a3, 0x1.921fb50000001p+0}, /* acos(1.58932547e-8) = 1.57079631090164190694 */
     {0x39826222, 0x1.920f690000001p+0}, /* acos(0.000248686469) = 1.57054764032363892599 */
 };
@@ -44,7 +44,7 @@ double sc_k_acos_core(float x)
 {
     double xd = (double)x;
     double r = sc_k_atan2(cosine_of_asin(xd), xd);
-    return SC_K_SETTLE(acos_hard_cases, x, r, 0x1p-46);
+    return SC_K_SETTLE(sc_k_acos_hard_cases, x, r, 0x1p-46);
 }
 
 float sc_asinf(float x) { return (float)sc_k_asin_core(x); }

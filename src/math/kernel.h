@@ -70,12 +70,20 @@ static inline double sc_k_lookup_hard(const sc_k_hard_case *table, int n, float 
     return r;
 }
 
+/* The hard cases of sin and acos that lie inside the range where their u1 batch kernels run the
+ * cores' algorithms in double lanes; src/simd/trig_impl.h sends exactly these inputs to sc_sinf
+ * and sc_acosf. (cos's hard cases lie beyond the Cody–Waite range, which goes to sc_cosf.) */
+extern const sc_k_hard_case sc_k_sin_hard_cases[2];
+extern const sc_k_hard_case sc_k_acos_hard_cases[2];
+
+/* the number of entries of a hard-case table */
+#define SC_K_TABLE_LEN(table) ((int)(sizeof(table) / sizeof((table)[0])))
+
 /* r, or x's value from its table when r, known to within eps·|r|, is too close to a midpoint
  * to tell (the hard-case check every correctly rounded core ends with). */
 #define SC_K_SETTLE(table, x, r, eps)                                                              \
-    (sc_k_near_midpoint((r), (eps))                                                                \
-         ? sc_k_lookup_hard((table), (int)(sizeof(table) / sizeof((table)[0])), (x), (r))          \
-         : (r))
+    (sc_k_near_midpoint((r), (eps)) ? sc_k_lookup_hard((table), SC_K_TABLE_LEN(table), (x), (r))   \
+                                    : (r))
 
 /* 2^x for any double x (clamped to ±1000, beyond which every binary32 result is 0 or +Inf);
  * relative error below 2^-52 (exp2.c). */

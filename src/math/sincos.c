@@ -153,7 +153,7 @@ static double sincos_eps(double core)
 /* The hard cases of sin: make exhaustive found these two over all 2^32 inputs (the core rounds
  * them the wrong way); values from MPFR at 300 bits: the midpoint's double one ULP toward the
  * exact value. */
-static const sc_k_hard_case sin_hard_cases[] = {
+const sc_k_hard_case sc_k_sin_hard_cases[2] = {
     {0x46199998, -0x1.63f4bafffffffp-2}, /* sin(9830.39844) = -0.34761326014995572995 */
     {0xc6199998, 0x1.63f4bafffffffp-2},  /* sin(-9830.39844) */
 };
@@ -162,7 +162,7 @@ double sc_k_sin_core(float x)
 {
     reduced q = reduce(x);
     double r = sin_quadrant(q.r, q.quadrant);
-    return SC_K_SETTLE(sin_hard_cases, x, r, sincos_eps(r));
+    return SC_K_SETTLE(sc_k_sin_hard_cases, x, r, sincos_eps(r));
 }
 
 /* The hard cases of cos (even: both signs of x), found and valued as sin's. */

@@ -4,9 +4,12 @@
  * u1: the algorithms of src/math/sincos.c, atan.c and asin.c in double lanes (same constants,
  * same polynomials, same order of operations, so that without FMA the bits are those of sc_sinf
  * etc.), rounded once; lanes with rare inputs go to the scalar built-in: sin/cos beyond the
- * Cody–Waite range or not finite, atan2 of (0, 0), (±Inf, ±Inf) or NaN.
+ * Cody–Waite range or not finite, atan2 of (0, 0), (±Inf, ±Inf) or NaN, and the inputs of the
+ * sin and acos hard-case tables.
  * Float tiers: Cody–Waite reduction by multiples of π/2 in two float parts, and polynomials
  * fitted on the reduced interval (mpmath chebyfit; the fit error is in each comment). */
+
+#include "math/kernel.h"
 
 /* ---- float tiers ---- */
 
@@ -208,9 +211,22 @@ static inline vm outside_cody_waite(vf x)
     return vm_or(vf_isnan(x), vf_le(vf_set1(cody_waite_limit_f), vf_abs(x)));
 }
 
+/* x's lanes equal to an input of a hard-case table (src/math/kernel.h): the double lanes compute
+ * what the scalar core computes before it consults the table, so those lanes go to the core. */
+static inline vm hard_case_lanes(vf x, const sc_k_hard_case *table, int n)
+{
+    vm lanes = vi_eq(vf_as_vi(x), vi_set1((int)table[0].bits));
+    for (int i = 1; i < n; i++)
+        lanes = vm_or(lanes, vi_eq(vf_as_vi(x), vi_set1((int)table[i].bits)));
+    return lanes;
+}
+
+#define HARD_CASE_LANES(x, table) hard_case_lanes((x), (table), SC_K_TABLE_LEN(table))
+
 static inline vf sin_u1(vf x)
 {
-    return fixup1(outside_cody_waite(x), x, on_doubles(x, sin_d), sc_sinf);
+    vm scalar = vm_or(outside_cody_waite(x), HARD_CASE_LANES(x, sc_k_sin_hard_cases));
+    return fixup1(scalar, x, on_doubles(x, sin_d), sc_sinf);
 }
 static inline vf cos_u1(vf x)
 {
@@ -276,7 +292,10 @@ static inline vf atan2_u1(vf y, vf x)
     return fixup2(special, y, x, on_doubles2(y, x, atan2_d), sc_atan2f);
 }
 
-static inline vf acos_u1(vf x) { return on_doubles(x, acos_d); }
+static inline vf acos_u1(vf x)
+{
+    return fixup1(HARD_CASE_LANES(x, sc_k_acos_hard_cases), x, on_doubles(x, acos_d), sc_acosf);
+}
 
 BATCH1(sin_u1, sin_u1)
 BATCH1(cos_u1, cos_u1)

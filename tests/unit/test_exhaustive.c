@@ -234,6 +234,49 @@ static void hard_cases_round_correctly(void **state)
     check_hard_case("acosh", 0x6eb1a8ec, 0x1p-47);
 }
 
+/* The sin and acos u1 batch kernels of every instruction set round their cores' hard cases as
+ * MPFR does, in every lane: each input sits at each position of a run of 67 ordinary inputs. */
+static void check_batch_hard_cases(const exh_subject *s, const sc_k_hard_case *table, int n)
+{
+    enum { RUN = 67 };
+    for (int t = 0; t < n; t++)
+        for (int at = 0; at < RUN; at++) {
+            float in[RUN], out[RUN], x, want;
+            double exact;
+            for (int i = 0; i < RUN; i++)
+                in[i] = 0.25f + 0.01f * (float)i;
+            memcpy(&x, &table[t].bits, sizeof x);
+            in[at] = x;
+            sc_batch_args a = {{in}, {out}, RUN, s->entry->params};
+            s->entry->fn(&a);
+            want = exh_mpfr_round32(s, x, 0.0f, &exact);
+            if (!exh_same(out[at], want))
+                fail_msg("%s(%a) = %a in lane %d, correctly rounded %a", s->name, (double)x,
+                         (double)out[at], at, (double)want);
+        }
+}
+
+static void batch_kernels_round_the_hard_cases(void **state)
+{
+    (void)state;
+    exh_subject subjects[64];
+    char names[64][EXH_NAME_MAX];
+    int n = exh_batch_subjects(subjects, names, 64), checked = 0;
+    for (int i = 0; i < n; i++) {
+        const char *kernel = subjects[i].entry->kernel;
+        if (strcmp(kernel, "sin") == 0)
+            check_batch_hard_cases(&subjects[i], sc_k_sin_hard_cases,
+                                   SC_K_TABLE_LEN(sc_k_sin_hard_cases));
+        else if (strcmp(kernel, "acos") == 0)
+            check_batch_hard_cases(&subjects[i], sc_k_acos_hard_cases,
+                                   SC_K_TABLE_LEN(sc_k_acos_hard_cases));
+        else
+            continue;
+        checked++;
+    }
+    assert_true(checked >= 2);
+}
+
 /* The hyperbolic functions at their extremes and around every switch point of their methods
  * (sinh.c, asinh.c) and of binary32 (overflow of sinh and cosh, saturation of tanh): each result
  * is MPFR's correctly rounded binary32 (±0 and NaN included). */
@@ -272,6 +315,7 @@ int main(void)
         cmocka_unit_test(a_mediump_not_from_highp_is_caught),
         cmocka_unit_test(pow_rounds_exact_midpoints),
         cmocka_unit_test(hard_cases_round_correctly),
+        cmocka_unit_test(batch_kernels_round_the_hard_cases),
         cmocka_unit_test(hyperbolic_extremes_round_correctly),
     };
     return cmocka_run_group_tests_name("exhaustive checker", tests, NULL, NULL);
