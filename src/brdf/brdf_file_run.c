@@ -42,11 +42,12 @@ static int parameter_line_of(const sc_brdf_file *f, const char *message)
 static void compile_error(const sc_brdf_file *f, const sc_lang_error *e, int call_at,
                           int shader_line, char *err, size_t size)
 {
-    if (e->line == call_at)
+    if (e->line == call_at) /* the call of BRDF the program ends with */
         snprintf(err, size,
                  "%s:%d: the shader must define vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, "
                  "vec3 Y) (%s)",
-                 f->name, shader_line, e->message);
+                 f->name, shader_line,
+                 strstr(e->message, "'__f'") ? "its BRDF returns another type" : e->message);
     else if (e->line > 0)
         snprintf(err, size, "%s:%d:%d: %s", f->name, e->line, e->column, e->message);
     else
