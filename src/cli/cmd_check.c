@@ -39,7 +39,7 @@ static void usage(FILE *out)
             "configurations (distance/size, light and view angles, roughness), its worst\n"
             "configuration and its time per evaluation.\n"
             "\n"
-            "  -b, --brdf SPEC     a BRDF as for 'shadecalc shade' (repeatable)\n"
+            "  -b, --brdf SPEC     a BRDF as for 'shadecalc shade', file=PATH too (repeatable)\n"
             "  -l, --light SPEC    an area light as for 'shadecalc shade' (its shape is kept,\n"
             "                      its position is each configuration's)\n"
             "  -t, --theta LIST    angles of incidence in degrees (default 0,5,...,85,89,89.9)\n"
