@@ -280,24 +280,20 @@ static void cook_torrance_body(FILE *out, const sc_brdf *b)
             b->form == SC_CT_1982 ? "    dg = 4.0 * dg;  // as printed in 1982\n" : "");
 }
 
+/* A specular lobe: its value, its scale by the form, and f = diffuse + c_spec·scale. */
+static void specular_body(FILE *out, const char *lobe, const char *scale, const char *specular)
+{
+    fputs(lobe, out);
+    fputs(scale, out);
+    fprintf(out, "    return diffuse + scale3(spec, %s);\n", specular);
+}
+
 static void model_body(FILE *out, const sc_brdf *b)
 {
     switch (b->kind) {
-    case SC_BRDF_PHONG:
-        fputs(phong_lobe, out);
-        fputs(phong_scales[b->form], out);
-        fputs("    return diffuse + scale3(spec, s);\n", out);
-        break;
-    case SC_BRDF_BLINN_PHONG:
-        fputs(blinn_lobe, out);
-        fputs(blinn_scales[b->form], out);
-        fputs("    return diffuse + scale3(spec, s);\n", out);
-        break;
-    case SC_BRDF_WARD:
-        fputs(ward_body, out);
-        fputs(ward_denominators[b->form], out);
-        fputs("    return diffuse + scale3(spec, e / den);\n", out);
-        break;
+    case SC_BRDF_PHONG: specular_body(out, phong_lobe, phong_scales[b->form], "s"); break;
+    case SC_BRDF_BLINN_PHONG: specular_body(out, blinn_lobe, blinn_scales[b->form], "s"); break;
+    case SC_BRDF_WARD: specular_body(out, ward_body, ward_denominators[b->form], "e / den"); break;
     case SC_BRDF_OREN_NAYAR:
         fputs(oren_nayar_angles, out);
         fputs(b->form == SC_OREN_FULL ? oren_nayar_full : oren_nayar_qualitative, out);
