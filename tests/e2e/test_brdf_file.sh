@@ -93,3 +93,9 @@ expect "export legacy" 2 '' "~not a built-in BRDF" -- brdf --export opengl
 expect "export nothing" 2 '' "error: brdf: no --export SPEC given (see 'shadecalc brdf --help')" -- brdf
 expect "export bad spec" 2 '' "~error: brdf: brdf ward: unknown key 'm'" -- brdf --export 'ward m=3'
 expect "export help" 0 '~usage: shadecalc brdf --export SPEC' '' -- brdf --help
+
+# area lights: the reference and point methods take a file BRDF; representative-point, which
+# lights the diffuse and specular parts apart, refuses it
+expect "area check" 0 '~reference  ' '' -- check --light 'sphere center=0,0,2 radius=1' --brdf "file=$D/constructs.brdf"
+verdict "area check without representative-point" sh -c '! "$SHADECALC" check --light "sphere center=0,0,2 radius=1" --brdf "file=$1/constructs.brdf" | grep -q representative' _ "$D"
+expect "representative-point refused" 2 '' "error: light 1: method=representative-point: not for a BRDF file (it lights the diffuse and specular parts apart; a file gives f alone)" -- shade --light 'sphere center=0,0,2 radius=1 method=representative-point' --brdf "file=$D/constructs.brdf"
