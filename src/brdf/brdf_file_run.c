@@ -141,8 +141,19 @@ int sc_brdf_file_params(const sc_brdf_file *f, const sc_brdf_param **out)
 
 /* ---- reading, once per path ---- */
 
-/* The whole file as a string: NULL with the error for an unreadable file, one over
- * MAX_FILE_SIZE (/dev/zero) or one holding a NUL byte. */
+/* Why the n bytes read from `in` are not a .brdf file's text (NULL if they are). */
+static const char *unreadable(const char *text, size_t n, FILE *in)
+{
+    if (!text)
+        return "out of memory";
+    if (ferror(in))
+        return strerror(errno ? errno : EIO);
+    if (n > MAX_FILE_SIZE)
+        return "over 1 MiB: not a .brdf file"; /* /dev/zero, an endless stream */
+    return memchr(text, '\0', n) ? "a NUL byte: not a text file" : NULL;
+}
+
+/* The whole file as a string, or NULL with the error. */
 static char *read_text(const char *path, char *err, size_t size)
 {
     FILE *in = fopen(path, "rb");
@@ -152,14 +163,10 @@ static char *read_text(const char *path, char *err, size_t size)
     }
     char *text = malloc(MAX_FILE_SIZE + 1);
     size_t n = text ? fread(text, 1, MAX_FILE_SIZE + 1, in) : 0;
-    int bad = !text        ? snprintf(err, size, "%s: out of memory", path)
-              : ferror(in) ? snprintf(err, size, "%s: %s", path, strerror(errno ? errno : EIO))
-              : n > MAX_FILE_SIZE
-                  ? snprintf(err, size, "%s: over %d bytes: not a .brdf file", path, MAX_FILE_SIZE)
-              : memchr(text, '\0', n) ? snprintf(err, size, "%s: a NUL byte: not a text file", path)
-                                      : 0;
+    const char *why = unreadable(text, n, in);
     fclose(in);
-    if (bad) {
+    if (why) {
+        snprintf(err, size, "%s: %s", path, why);
         free(text);
         return NULL;
     }

@@ -29,7 +29,7 @@ expect "outside the range" 2 '' "error: tests/brdf/constructs.brdf: kd=1.5: outs
 expect "nan value" 2 '' "error: tests/brdf/constructs.brdf: kd=nan: expected a finite number" -- shade --light "$LIGHT" --brdf "file=$D/constructs.brdf kd=nan"
 expect "bool value" 2 '' "error: tests/brdf/constructs.brdf: doubled=2: expected 0, 1, true or false" -- shade --light "$LIGHT" --brdf "file=$D/constructs.brdf doubled=2"
 expect "given twice" 2 '' "error: tests/brdf/constructs.brdf: kd= is given twice" -- shade --light "$LIGHT" --brdf "file=$D/constructs.brdf kd=0.1 kd=0.2"
-expect "endless file" 2 '' "error: /dev/zero: over 1048576 bytes: not a .brdf file" -- shade --light "$LIGHT" --brdf "file=/dev/zero"
+expect "endless file" 2 '' "error: /dev/zero: over 1 MiB: not a .brdf file" -- shade --light "$LIGHT" --brdf "file=/dev/zero"
 expect "a directory" 2 '' "error: $D: Is a directory" -- shade --light "$LIGHT" --brdf "file=$D"
 expect "no file" 2 '' "error: $D/none.brdf: No such file or directory" -- shade --light "$LIGHT" --brdf "file=$D/none.brdf"
 
