@@ -22,6 +22,7 @@
  *   oren-nayar   qualitative | full  (Oren–Nayar 1994, σ in radians, ρ = albedo)
  *   cook-torrance walter | 1982   c_diff/π + D F G / (4 cos θ_i cos θ_o); 1982 as printed is 4×
  *                D beckmann|ggx, G cook-torrance|smith|smith-correlated, F schlick|exact|none
+ *   file         f = BRDF(L, V, N, X, Y) of a .brdf file's GLSL (shadecalc/brdf_file.h)
  *
  * Guards (each documented in the man page): divisions by cos θ_i, cos θ_o take them at least
  * 1e-6; α is at least 1e-4 (pbrt); h = n when l = −v (docs/formulas.md §1); pow(0, 0) = 1; Ward's exponent
@@ -43,7 +44,8 @@ typedef enum {
     SC_BRDF_BLINN_PHONG,
     SC_BRDF_WARD,
     SC_BRDF_OREN_NAYAR,
-    SC_BRDF_COOK_TORRANCE
+    SC_BRDF_COOK_TORRANCE,
+    SC_BRDF_FILE /* a BRDF written in GLSL (shadecalc/brdf_file.h) */
 } sc_brdf_kind;
 
 /* Variants (sc_brdf.form), by model, in the order sc_brdf_form_name lists them. */
@@ -56,6 +58,11 @@ enum { SC_CT_WALTER, SC_CT_1982 };
 typedef enum { SC_D_BECKMANN, SC_D_GGX } sc_ndf;
 typedef enum { SC_G_VCAVITY, SC_G_SMITH, SC_G_SMITH_CORRELATED } sc_masking;
 typedef enum { SC_F_SCHLICK, SC_F_EXACT, SC_F_NONE } sc_fresnel;
+
+/* A compiled .brdf file (shadecalc/brdf_file.h). */
+typedef struct sc_brdf_file sc_brdf_file;
+
+enum { SC_BRDF_FILE_MAX_PARAMS = 32, SC_BRDF_FILE_MAX_VALUES = 3 * SC_BRDF_FILE_MAX_PARAMS };
 
 typedef struct {
     sc_brdf_kind kind;
@@ -71,6 +78,9 @@ typedef struct {
     sc_fresnel F;
     double f0[3]; /* schlick F0 */
     double ior;   /* exact Fresnel: relative index of refraction η */
+    /* SC_BRDF_FILE: the file (shared, never freed by sc_brdf) and its parameters' values */
+    const sc_brdf_file *file;
+    double file_values[SC_BRDF_FILE_MAX_VALUES];
 } sc_brdf;
 
 /* Orthonormal frame: n unit normal, t tangent (t ⟂ n), b = n × t. */

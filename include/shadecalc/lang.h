@@ -67,6 +67,10 @@ typedef struct {
      * uint scalar or vector where a float one is expected (an operand beside a float, an
      * initializer, an assigned or returned value, a function argument) converts to float. */
     int implicit_int_to_float;
+    /* Desktop GLSL's built-in redefinition (GLSL 1.10 to 4.60, unlike GLSL ES): a program may
+     * define functions named as built-ins; a call whose arguments fit one of them calls it,
+     * other calls of the name still call the built-in. */
+    int desktop_builtins;
 } sc_lang_options;
 
 enum { SC_LANG_DEFAULT_MAX_ITERATIONS = 10000000 };

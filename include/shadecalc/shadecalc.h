@@ -11,6 +11,7 @@
 #include "shadecalc/area.h"
 #include "shadecalc/batch.h"
 #include "shadecalc/brdf.h"
+#include "shadecalc/brdf_file.h"
 #include "shadecalc/check.h"
 #include "shadecalc/expr.h"
 #include "shadecalc/file.h"

@@ -164,6 +164,10 @@ static void lobe_exponent(double m, sc_shade_uniforms *u)
 
 static int brdf_uniforms_of(const sc_brdf *b, sc_shade_uniforms *u, char *why, size_t size)
 {
+    if (b->kind == SC_BRDF_FILE)
+        return refuse(why, size,
+                      "a BRDF file's GLSL runs in the interpreter, not in the batch "
+                      "kernels");
     if (!(b->kind >= SC_BRDF_LAMBERT && b->kind <= SC_BRDF_COOK_TORRANCE))
         return refuse(why, size, "brdf kind %d is not covered by the batch kernels", (int)b->kind);
     sc_uniforms_brdf(b, &u->brdf);

@@ -4,10 +4,11 @@
 #include <string.h>
 
 #include "brdf/brdf_internal.h"
+#include "shadecalc/brdf_file.h"
 #include "shadecalc/light.h"
 
-static const char *const kind_names[] = {"lambert", "phong",      "blinn-phong",
-                                         "ward",    "oren-nayar", "cook-torrance"};
+static const char *const kind_names[] = {"lambert",    "phong",         "blinn-phong", "ward",
+                                         "oren-nayar", "cook-torrance", "file"};
 static const char *const form_names[][4] = {
     {"default", NULL},
     {"original", "modified", "normalized", NULL},
@@ -15,6 +16,7 @@ static const char *const form_names[][4] = {
     {"1992", "duer", "gmd", NULL},
     {"qualitative", "full", NULL},
     {"walter", "1982", NULL},
+    {"default", NULL},
 };
 
 const char *sc_brdf_kind_name(sc_brdf_kind kind) { return kind_names[kind]; }
@@ -140,6 +142,10 @@ void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const doub
     out->cos_h = g.cos_h;
     if (!(g.cos_i > 0.0 && g.cos_o > 0.0))
         return; /* below the horizon: f = 0 */
+    if (b->kind == SC_BRDF_FILE) {
+        sc_brdf_file_eval(p, b, frame, l, v, out->f);
+        return;
+    }
     static void (*const models[])(sc_prec, const sc_brdf *, const brdf_geometry *,
                                   sc_brdf_terms *) = {
         lambert,      sc_brdf_phong,      sc_brdf_blinn_phong,

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/check_area.h"
+#include "cli/brdf_file_cli.h"
 #include "cli/cli.h"
 #include "shadecalc/check.h"
 #include "shadecalc/scene.h"
@@ -38,7 +39,7 @@ static void usage(FILE *out)
             "configurations (distance/size, light and view angles, roughness), its worst\n"
             "configuration and its time per evaluation.\n"
             "\n"
-            "  -b, --brdf SPEC     a BRDF as for 'shadecalc shade' (repeatable)\n"
+            "  -b, --brdf SPEC     a BRDF as for 'shadecalc shade', file=PATH too (repeatable)\n"
             "  -l, --light SPEC    an area light as for 'shadecalc shade' (its shape is kept,\n"
             "                      its position is each configuration's)\n"
             "  -t, --theta LIST    angles of incidence in degrees (default 0,5,...,85,89,89.9)\n"
@@ -126,7 +127,7 @@ static int parse_thetas(const char *arg, check_options *o)
 
 static int add_brdf(check_options *o, const char *spec)
 {
-    char err[256];
+    char err[512];
     if (o->n == MAX_BRDFS) {
         sc_error("check: too many --brdf (at most %d)", MAX_BRDFS);
         return SC_EXIT_USAGE;
@@ -253,6 +254,8 @@ static int run(int argc, char **argv)
                                                     CHECK_AREA_JSON};
         status = check_area_run(o->light_spec, &o->light, o->specs[0], &o->models[0].brdf,
                                 formats[o->format]);
+        if (status == SC_EXIT_OK)
+            status = brdf_file_status(&o->models[0], "check");
         o->n = 0;
     }
     if (status == SC_EXIT_OK && o->format == FMT_CSV && !o->light_spec)
@@ -260,6 +263,8 @@ static int run(int argc, char **argv)
                "energy_conserving,reciprocal\n");
     for (int i = 0; status == SC_EXIT_OK && i < o->n; i++) {
         compute(&o->models[i].brdf, o, r);
+        if ((status = brdf_file_status(&o->models[i], "check")) != SC_EXIT_OK)
+            break;
         if (o->format == FMT_CSV)
             print_csv_rows(o->specs[i], o, r);
         else

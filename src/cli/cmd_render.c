@@ -8,6 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cli/brdf_file_cli.h"
 #include "cli/cli.h"
 #include "cli/progress.h"
 #include "cli/setup.h"
@@ -581,6 +582,8 @@ static int render_one(const render_options *o, const shade_setup *s, const sc_sc
     }
     if (status == SC_EXIT_OK)
         status = draw(&rp, sc_shading_name(o->shading), &fb, &seconds);
+    if (status == SC_EXIT_OK) /* a shader that failed gave NaN: no image */
+        status = brdf_file_status(&scene->model, "render");
     if (status == SC_EXIT_OK) {
         warn_overflow(&fb, o);
         status = write_image(&fb, o, o->output, sc_shading_name(o->shading));

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/brdf_file_cli.h"
 #include "cli/cli.h"
 #include "cli/setup.h"
 
@@ -26,7 +27,8 @@ static void usage(FILE *out)
             "  -l, --light SPEC     a light (repeatable): directional|point|spot|sphere|tube|\n"
             "                       disk|rect key=value...\n"
             "  -b, --brdf SPEC      the model: lambert|phong|blinn-phong|ward|oren-nayar|\n"
-            "                       cook-torrance|ads|opengl|direct3d9 key=value...\n"
+            "                       cook-torrance|ads|opengl|direct3d9 key=value..., or\n"
+            "                       file=PATH NAME=VALUE... (a BRDF Explorer .brdf file)\n"
             "  -a, --ambient C      global ambient radiance L_A (R,G,B or one number)\n"
             "  -s, --scene FILE     lines 'light SPEC', 'brdf SPEC', 'ambient C', 'n|v|p|eye|\n"
             "                       tangent X,Y,Z'; options add lights and override the rest\n"
@@ -123,10 +125,14 @@ static int light_terms(const sc_light *light, const sc_light_terms *t, const sc_
     if (brdf)
         out[n++] = (explain_term){"  cos theta_o = ", "cos_theta_o", 1, &t->brdf.cos_o};
     out[n++] = (explain_term){"  cos theta_h = ", "cos_theta_h", 1, &t->brdf.cos_h};
-    out[n++] = (explain_term){brdf ? "\n  f: diffuse " : "\n  diffuse colour ", "diffuse", 3,
-                              t->brdf.diffuse};
-    out[n++] = (explain_term){brdf ? "  specular " : "  specular colour ", "specular", 3,
-                              t->brdf.specular};
+    if (brdf && m->brdf.kind == SC_BRDF_FILE) { /* the shader gives f alone */
+        out[n++] = (explain_term){"\n  f = ", "f", 3, t->brdf.f};
+    } else {
+        out[n++] = (explain_term){brdf ? "\n  f: diffuse " : "\n  diffuse colour ", "diffuse", 3,
+                                  t->brdf.diffuse};
+        out[n++] = (explain_term){brdf ? "  specular " : "  specular colour ", "specular", 3,
+                                  t->brdf.specular};
+    }
     if (ward)
         out[n++] = (explain_term){"  exp term = ", "exp_term", 1, &t->brdf.D};
     if (cook_torrance) {
@@ -167,6 +173,7 @@ static void explain_light(FILE *out, int k, const sc_light *light, const sc_ligh
 static void print_text(const shade_setup *s, const sc_shade_result *r, const shade_options *o)
 {
     if (o->explain) {
+        brdf_file_explain(stdout, &s->model, o->prec, 0);
         for (int k = 0; k < s->n_lights; k++)
             explain_light(stdout, k, &s->lights[k], &r->per_light[k], &s->model, o->prec);
         fputs("global ambient c_amb*L_A ", stdout);
@@ -216,6 +223,7 @@ static void print_json(const shade_setup *s, const sc_shade_result *r, const sha
     printf("{\"precision\": \"%s\", \"L\": ", sc_prec_name(o->prec));
     triple(stdout, r->L, o->prec, 1);
     if (o->explain) {
+        brdf_file_explain(stdout, &s->model, o->prec, 1);
         printf(", \"ambient\": ");
         triple(stdout, r->ambient, o->prec, 1);
         printf(", \"lights\": [");
@@ -342,12 +350,15 @@ static int run(int argc, char **argv)
         status = setup_check_range(s, o.prec);
     if (status == SC_EXIT_OK)
         status = setup_point(s, &at);
+    sc_light_terms terms[SETUP_MAX_LIGHTS];
+    sc_shade_result r = {.per_light = terms};
     if (status == SC_EXIT_OK) {
-        sc_light_terms terms[SETUP_MAX_LIGHTS];
         sc_scene scene = {
             s->lights, s->n_lights, s->model, {s->ambient[0], s->ambient[1], s->ambient[2]}};
-        sc_shade_result r = {.per_light = terms};
         sc_shade(o.prec, &scene, &at, &r);
+        status = brdf_file_status(&s->model, "shade");
+    }
+    if (status == SC_EXIT_OK) {
         if (isinf(r.L[0]) || isinf(r.L[1]) || isinf(r.L[2]))
             sc_warning("shade: L_o overflows the %s range: inf", sc_prec_name(o.prec));
         if (o.format == FMT_TEXT)

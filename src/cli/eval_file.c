@@ -274,7 +274,7 @@ int sc_eval_file(const char *path, const sc_expr_input *defines, const sc_value 
         in_values[i].type = inputs[i].type;
         memcpy(in_values[i].v, values[i].v, sizeof values[i].v);
     }
-    sc_lang_options options = {o->max_iterations, 0};
+    sc_lang_options options = {o->max_iterations, 0, 0};
     sc_lang_error err;
     sc_program *prog = sc_program_compile(src, inputs, n_defines < 32 ? n_defines : 32, &options,
                                           &err);

@@ -41,7 +41,7 @@ int setup_add_light(shade_setup *s, const char *spec, const char *where)
 
 int setup_set_model(shade_setup *s, const char *spec, const char *where)
 {
-    char err[256];
+    char err[512];
     int parsed = sc_model_parse(spec, &s->model, err, sizeof err);
     if (parsed < 0) {
         sc_error("%s%s", where, err);

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/brdf_file_cli.h"
 #include "cli/cli.h"
 #include "cli/setup.h"
 #include "cli/sweep_cli.h"
@@ -161,6 +162,15 @@ static int shade_by_plan(const sc_batch_plan *plan, const sc_shade_point *at, do
     return 1;
 }
 
+/* -1 with the error if the model's GLSL (a BRDF file) failed at run time (its loop bound). */
+static int shader_failed(const sc_model *m, char *err, size_t errsize)
+{
+    const char *why = brdf_file_failure(m);
+    if (why)
+        snprintf(err, errsize, "%s", why);
+    return why ? -1 : 0;
+}
+
 static int eval_row(void *user, int worker, const double *vars, double *results, char *err,
                     size_t errsize)
 {
@@ -175,7 +185,7 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
         sc_brdf_terms terms;
         sc_brdf_eval(s->prec, &w->model.brdf, &at.frame, l, at.v, &terms);
         memcpy(results, terms.f, sizeof terms.f);
-        return 0;
+        return shader_failed(&w->model, err, errsize);
     }
     for (int k = 0; moves_l(s) && k < s->setup.n_lights; k++)
         if (w->lights[k].kind == SC_LIGHT_DIRECTIONAL)
@@ -189,7 +199,7 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
     sc_shade_result r = {.per_light = NULL};
     sc_shade(s->prec, &scene, &at, &r);
     memcpy(results, r.L, sizeof r.L);
-    return 0;
+    return shader_failed(&w->model, err, errsize);
 }
 
 static void destroy(void *user)

@@ -111,6 +111,7 @@ typedef struct {
     int n_funcs, cap_funcs;
     int cur_func; /* -1 at top level */
     int implicit; /* sc_lang_options.implicit_int_to_float */
+    int desktop_builtins;
     loop_ctx *loop;
 } compiler;
 
@@ -165,5 +166,9 @@ int declare_variable(compiler *cs, const ltoken *name, sc_ltype t, int is_const,
 const function *find_function(const compiler *cs, const char *s, int len);
 /* A call of user function f with argument operands: the result in *out. */
 int call_function(compiler *cs, const ltoken *name, operand *args, int n_args, operand *out);
+/* Whether the call of `name` with these arguments goes to a function of the program: one of
+ * that name exists and, where a built-in has the name too (desktop_builtins), its parameters
+ * take the arguments. */
+int calls_user_function(const compiler *cs, const ltoken *name, const operand *args, int n_args);
 
 #endif

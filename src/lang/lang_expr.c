@@ -443,7 +443,7 @@ static int parse_call(compiler *cs, const ltoken *name, operand *out)
             return fail_at(cs, name, "void is not a constructor");
         return construct(cs, name, t, args, n_args, out);
     }
-    if (find_function(cs, name->start, name->len))
+    if (calls_user_function(cs, name, args, n_args))
         return call_function(cs, name, args, n_args, out);
     if (sc_builtin_exists(name->start, name->len) || sc_lang_builtin_exists(name->start, name->len))
         return call_builtin(cs, name, args, n_args, out);

@@ -178,6 +178,24 @@ static const function *find_callee(const compiler *cs, const ltoken *name, const
     return exact;
 }
 
+static int is_builtin_function(const ltoken *name)
+{
+    return sc_builtin_exists(name->start, name->len) ||
+           sc_lang_builtin_exists(name->start, name->len);
+}
+
+int calls_user_function(const compiler *cs, const ltoken *name, const operand *args, int n_args)
+{
+    if (!find_function(cs, name->start, name->len))
+        return 0;
+    if (!cs->desktop_builtins || !is_builtin_function(name))
+        return 1;
+    sc_ltype types[MAX_CALL_ARGS];
+    for (int i = 0; i < n_args; i++)
+        types[i] = args[i].type;
+    return find_callee(cs, name, types, n_args) != NULL;
+}
+
 static int no_overload(compiler *cs, const ltoken *name, const sc_ltype *types, int n)
 {
     char list[120] = "", tb[16];
@@ -282,7 +300,7 @@ static int parse_params(compiler *cs, function *f, ltoken *names)
 
 static int check_new_function(compiler *cs, const ltoken *name, const function *f)
 {
-    if (is_reserved(name->start, name->len))
+    if (is_reserved(name->start, name->len) && !(cs->desktop_builtins && is_builtin_function(name)))
         return fail_at(cs, name,
                        "'%.*s' is a built-in or reserved name (GLSL ES does not let a "
                        "program redefine or overload built-ins)",
@@ -718,6 +736,7 @@ sc_program *sc_program_compile(const char *src, const sc_lang_input *inputs, int
     cs.err = err;
     cs.cur_func = -1;
     cs.implicit = options && options->implicit_int_to_float;
+    cs.desktop_builtins = options && options->desktop_builtins;
     cs.prog = calloc(1, sizeof *cs.prog);
     size_t len = strlen(src);
     char *copy = cs.prog ? malloc(len + 1) : NULL;

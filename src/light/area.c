@@ -116,6 +116,12 @@ int sc_area_method_applies(sc_light_kind kind, sc_area_method method, const sc_b
         snprintf(msg, size, "method=representative-point: sphere and tube lights only");
         return -1;
     }
+    if (method == SC_AREA_REPRESENTATIVE && b && b->kind == SC_BRDF_FILE) {
+        snprintf(msg, size,
+                 "method=representative-point: not for a BRDF file (it lights the "
+                 "diffuse and specular parts apart; a file gives f alone)");
+        return -1;
+    }
     if (method == SC_AREA_LTC && kind != SC_LIGHT_DISK && kind != SC_LIGHT_RECT) {
         snprintf(msg, size, "method=ltc: disk and rect lights only");
         return -1;

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "shadecalc/brdf_file.h"
 #include "util/text.h"
 
 enum { MAX_ITEM = 256, MAX_WRITES = 40, SHOWN = 80 };
@@ -654,10 +655,60 @@ static void init_model(sc_model *m, int kind)
         sc_brdf_init(&m->brdf, (sc_brdf_kind)kind);
 }
 
+/* ---- file=PATH NAME=VALUE ... (shadecalc/brdf_file.h) ---- */
+
+typedef struct {
+    sc_brdf *brdf;
+    unsigned long set; /* bit i: parameter i was given */
+    char *err;
+    size_t size;
+} file_ctx;
+
+static int apply_file_item(void *vctx, const item *it)
+{
+    file_ctx *c = vctx;
+    if (sc_brdf_file_set(c->brdf, it->key, it->value, c->err, c->size) < 0)
+        return -1;
+    const sc_brdf_param *params;
+    int i = 0, n = sc_brdf_file_params(c->brdf->file, &params);
+    while (i < n && strcmp(params[i].name, it->key) != 0)
+        i++;
+    if (c->set & 1ul << i)
+        return fail(c->err, c->size, "%s: %s= is given twice", sc_brdf_file_name(c->brdf->file),
+                    it->key);
+    c->set |= 1ul << i;
+    return 0;
+}
+
+/* A spec whose first item is file=PATH: the file's BRDF, then its parameters' values. */
+static int parse_file_model(const char *spec, sc_model *out, char *err, size_t size)
+{
+    char path[MAX_ITEM], what[MAX_ITEM + 16], shown[SHOWN];
+    size_t len = strcspn(spec, " \t");
+    if (len >= sizeof path)
+        return fail(err, size, "brdf %s: the path is too long",
+                    sc_escape_n(spec, len, shown, sizeof shown));
+    snprintf(path, sizeof path, "%.*s", (int)len, spec);
+    const char *rest = spec + len;
+    snprintf(what, sizeof what, "brdf file=%s", path);
+    sc_model_init(out, SC_MODEL_BRDF);
+    const sc_brdf_file *f = sc_brdf_file_load(path, err, size);
+    if (!f)
+        return -1;
+    sc_brdf_file_defaults(f, &out->brdf);
+    file_ctx c = {.brdf = &out->brdf, .err = err, .size = size};
+    if (for_each_item(rest, what, err, size, apply_file_item, &c) < 0)
+        return -1;
+    err[0] = '\0';
+    return 0;
+}
+
 int sc_model_parse(const char *spec, sc_model *out, char *err, size_t size)
 {
     char kind[32];
-    const char *rest = NULL;
+    const char *rest = NULL, *first = spec + strspn(spec, " \t");
+    if (strncmp(first, "file=", 5) == 0)
+        return parse_file_model(first + 5, out, err, size);
     int has_kind = kind_word(spec, kind, sizeof kind, &rest) == 0;
     int k = has_kind ? word_index(model_kinds, kind) : -1;
     if (k < 0)

@@ -32,7 +32,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     src[size] = '\0';
     sc_lang_input inputs[2] = {{"x", {SC_KIND_FLOAT, 1, 1}}, {"v", {SC_KIND_FLOAT, 1, 3}}};
     sc_lvalue values[2] = {{{SC_KIND_FLOAT, 1, 1}, {0.5}}, {{SC_KIND_FLOAT, 1, 3}, {1, -2, 3}}};
-    sc_lang_options options = {10000, (int)(size & 1)};
+    sc_lang_options options = {10000, (int)(size & 1), (int)(size >> 1 & 1)};
     sc_lang_error err;
     sc_program *prog = sc_program_compile(src, inputs, 2, &options, &err);
     if (prog) {

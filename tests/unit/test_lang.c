@@ -82,7 +82,7 @@ static void assert_compile_error(const char *src, int line, int column, const ch
 static void assert_runtime_error(const char *src, long bound, int line, const char *text)
 {
     sc_lang_error err;
-    sc_lang_options options = {bound, 0};
+    sc_lang_options options = {bound, 0, 0};
     sc_program *prog = sc_program_compile(src, NULL, 0, &options, &err);
     if (!prog)
         fail_msg("'%s' did not compile: %s", src, err.message);
@@ -397,12 +397,12 @@ static void float_builtins_keep_working(void **state)
 
 /* ---- desktop GLSL's implicit int -> float ---- */
 
-static results run_desktop(const char *src)
+static results run_desktop_with(const char *src, int builtins)
 {
     results r;
     memset(&r, 0, sizeof r);
     sc_lang_error err;
-    sc_lang_options options = {0, 1};
+    sc_lang_options options = {0, 1, builtins};
     sc_program *prog = sc_program_compile(src, NULL, 0, &options, &err);
     if (!prog)
         fail_msg("'%s' did not compile: %d:%d: %s", src, err.line, err.column, err.message);
@@ -410,6 +410,31 @@ static results run_desktop(const char *src)
         fail_msg("'%s' failed: %s", src, err.message);
     sc_program_free(prog);
     return r;
+}
+
+static results run_desktop(const char *src) { return run_desktop_with(src, 0); }
+
+/* BRDF Explorer's files define their own smoothstep and reflect (GLSL 1.10 to 4.60 allow it) */
+static void desktop_dialect_redefines_builtins(void **state)
+{
+    (void)state;
+    results r = run_desktop_with("float smoothstep(float a, float b, float x) { return 7.0; }"
+                                 "vec3 reflect(vec3 i, vec3 n) { return vec3(9.0); }"
+                                 "smoothstep(0.0, 1.0, 0.5); smoothstep(0, 1, 0);"
+                                 "smoothstep(vec2(0.0), vec2(1.0), vec2(0.5)).y;"
+                                 "reflect(vec3(1.0), vec3(0.0, 1.0, 0.0)).x;"
+                                 "reflect(vec2(1.0, -1.0), vec2(0.0, 1.0)).y;",
+                                 1);
+    assert_int_equal(r.n, 5);
+    assert_true(r.v[0].v[0] == 7.0 && r.v[1].v[0] == 7.0); /* the program's, ints widened */
+    assert_true(r.v[2].v[0] == 0.5);                       /* the built-in: vec2 arguments */
+    assert_true(r.v[3].v[0] == 9.0);
+    assert_true(r.v[4].v[0] == 1.0); /* built-in reflect(i, n) = i - 2 dot(n, i) n */
+    /* without the option (and in GLSL ES) it stays an error */
+    sc_lang_error err;
+    sc_lang_options options = {0, 1, 0};
+    assert_null(sc_program_compile("float sin(float x) { return x; }", NULL, 0, &options, &err));
+    assert_true(strstr(err.message, "built-in") != NULL);
 }
 
 static void desktop_dialect_converts_ints_to_float(void **state)
@@ -429,7 +454,7 @@ static void desktop_dialect_converts_ints_to_float(void **state)
     assert_true(r.v[8].type.kind == SC_KIND_INT && r.v[8].v[0] == 0.0);
     /* never float -> int */
     sc_lang_error err;
-    sc_lang_options options = {0, 1};
+    sc_lang_options options = {0, 1, 0};
     assert_null(sc_program_compile("int i = 1.5;", NULL, 0, &options, &err));
     assert_true(strstr(err.message, "cannot initialize int") != NULL);
     /* wrong calls stay errors (the retry with widened arguments happens once) */
@@ -527,6 +552,7 @@ int main(void)
         cmocka_unit_test(bit_casts_and_packing),
         cmocka_unit_test(float_builtins_keep_working),
         cmocka_unit_test(desktop_dialect_converts_ints_to_float),
+        cmocka_unit_test(desktop_dialect_redefines_builtins),
         cmocka_unit_test(type_errors_name_line_and_column),
         cmocka_unit_test(runtime_errors_name_the_line),
         cmocka_unit_test(deep_nesting_is_an_error),
