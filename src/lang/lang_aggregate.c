@@ -185,9 +185,9 @@ static int parse_member_declaration(compiler *cs, int index)
         if (name.kind != T_IDENT)
             return fail_expected(cs, "a member name");
         next(cs);
-        if (is_punct(cs, '[') && (is_array(cs, t) ? fail_at(cs, &cs->tok,
-                                                            "arrays of arrays are not GLSL ES 3.00")
-                                                  : parse_array_suffix(cs, t, &mt, NULL)) < 0)
+        if (is_punct(cs, '[') &&
+            (is_array(cs, t) ? fail_at(cs, &cs->tok, "arrays of arrays are not GLSL ES 3.00")
+                             : parse_array_suffix(cs, t, &mt, NULL)) < 0)
             return -1;
         if (type_depth(cs, mt) >= MAX_TYPE_DEPTH)
             return fail_at(cs, &name, "types nested too deeply (more than %d levels)",
@@ -365,8 +365,7 @@ static int add_emit(compiler *cs, int start, int len, sc_ltype t)
     return pr->n_emits++;
 }
 
-static int emit_leaf(compiler *cs, const ltoken *at, const char *name, int len, sc_ltype t,
-                     int reg)
+static int emit_leaf(compiler *cs, const ltoken *at, const char *name, int len, sc_ltype t, int reg)
 {
     int label = add_label(cs, name, len);
     int site = label < 0 ? -1 : add_emit(cs, cs->src_len + 1 + label, len, t);

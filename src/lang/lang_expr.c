@@ -140,8 +140,8 @@ static const char *const keywords[] = {
 int is_reserved(const char *s, int len)
 {
     sc_ltype t;
-    if (sc_lt_parse(s, len, &t) == 0 || sc_builtin_exists(s, len) || sc_lang_builtin_exists(s, len) ||
-        (len == 4 && strncmp(s, "modf", 4) == 0))
+    if (sc_lt_parse(s, len, &t) == 0 || sc_builtin_exists(s, len) ||
+        sc_lang_builtin_exists(s, len) || (len == 4 && strncmp(s, "modf", 4) == 0))
         return 1;
     for (int i = 0; keywords[i]; i++)
         if ((int)strlen(keywords[i]) == len && strncmp(keywords[i], s, (size_t)len) == 0)
@@ -211,7 +211,8 @@ static int check_construct(compiler *cs, const ltoken *at, sc_ltype t, const ope
         return fail_at(cs, at, "%s: expects at least 1 argument", type_str(cs, t, tb));
     for (int i = 0; i < n_args; i++)
         if (is_aggregate(args[i].type))
-            return fail_at(cs, at, "%s: argument %d is %s (an array or structure is not components)",
+            return fail_at(cs, at,
+                           "%s: argument %d is %s (an array or structure is not components)",
                            type_str(cs, t, tb), i + 1, type_str(cs, args[i].type, ab));
     if (n_args == 1 && (sc_lt_is_scalar(t) || sc_lt_is_scalar(args[0].type) ||
                         (sc_lt_is_matrix(t) && sc_lt_is_matrix(args[0].type))))
@@ -228,8 +229,8 @@ static int check_construct(compiler *cs, const ltoken *at, sc_ltype t, const ope
         have += sc_ltype_size(args[i].type);
     }
     if (have < need)
-        return fail_at(cs, at, "%s: not enough components (%d given, %d needed)", type_str(cs, t, tb),
-                       have, need);
+        return fail_at(cs, at, "%s: not enough components (%d given, %d needed)",
+                       type_str(cs, t, tb), have, need);
     return 0;
 }
 
@@ -301,8 +302,8 @@ static int add_call(compiler *cs, builtin_call call)
 }
 
 /* The float built-ins of expr/builtins.c: every argument float, vecN or matN. */
-static int resolve_float_builtin(const compiler *cs, const ltoken *name, const operand *args, int n_args,
-                                 builtin_call *call, char *msg, int msg_size)
+static int resolve_float_builtin(const compiler *cs, const ltoken *name, const operand *args,
+                                 int n_args, builtin_call *call, char *msg, int msg_size)
 {
     sc_type types[4], result;
     for (int i = 0; i < n_args; i++)
@@ -379,7 +380,8 @@ static int call_builtin(compiler *cs, const ltoken *name, const operand *args, i
         return fail_at(cs, name, "%.*s: too many arguments", name->len, name->start);
     for (int i = 0; i < n_args; i++)
         if (is_aggregate(args[i].type))
-            return fail_at(cs, name, "%.*s: argument %d is %s; built-ins take no arrays or structures",
+            return fail_at(cs, name,
+                           "%.*s: argument %d is %s; built-ins take no arrays or structures",
                            name->len, name->start, i + 1, type_str(cs, args[i].type, msg));
     for (int i = 0; i < n_args; i++) {
         types[i] = call.types[i] = args[i].type;
@@ -623,7 +625,7 @@ static int parse_length_method(compiler *cs, operand *o)
     next(cs); /* length */
     if (expect(cs, '(', "'(' after 'length'") < 0 || expect(cs, ')', "')'") < 0)
         return -1;
-    int n = is_array(cs, o->type)       ? aggregate_of(cs, o->type)->length
+    int n = is_array(cs, o->type)      ? aggregate_of(cs, o->type)->length
             : sc_lt_is_matrix(o->type) ? o->type.cols
                                        : o->type.rows;
     int reg = const_reg(cs, SC_KIND_INT, n);
@@ -682,7 +684,8 @@ static int check_index(compiler *cs, const ltoken *at, const operand *idx, int c
 {
     char tb[16];
     if (!sc_lt_is_integer(idx->type) || !sc_lt_is_scalar(idx->type))
-        return fail_at(cs, at, "an index must be an int or uint, not %s", type_str(cs, idx->type, tb));
+        return fail_at(cs, at, "an index must be an int or uint, not %s",
+                       type_str(cs, idx->type, tb));
     if (idx->is_literal && !(idx->literal >= 0 && idx->literal < count))
         return fail_at(cs, at, "index %.0f is out of range 0..%d", idx->literal, count - 1);
     return 0;
@@ -755,9 +758,9 @@ int store(compiler *cs, const operand *lv, int src, const ltoken *at)
 {
     if (is_aggregate(lv->type)) { /* one block: its registers are consecutive */
         int n = type_size(cs, lv->type);
-        int i = lv->lv_index < 0 ? emit_at(cs, at, OP_MOV, lv->lv_reg, src, 0, 0, n)
-                                 : emit_at(cs, at, OP_STORE, lv->lv_reg, src, lv->lv_index,
-                                           lv->lv_count, n);
+        int i = lv->lv_index < 0
+                    ? emit_at(cs, at, OP_MOV, lv->lv_reg, src, 0, 0, n)
+                    : emit_at(cs, at, OP_STORE, lv->lv_reg, src, lv->lv_index, lv->lv_count, n);
         if (i < 0)
             return -1;
         cs->prog->code[i].kind = (unsigned char)lv->lv_stride;

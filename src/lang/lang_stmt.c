@@ -230,7 +230,8 @@ static int no_overload(compiler *cs, const ltoken *name, const sc_ltype *types, 
     char list[120] = "", tb[16];
     for (int i = 0; i < n; i++) {
         size_t used = strlen(list);
-        snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", type_str(cs, types[i], tb));
+        snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "",
+                 type_str(cs, types[i], tb));
     }
     return fail_at(cs, name, "no function '%.*s' takes (%s)", name->len, name->start, list);
 }
@@ -384,16 +385,14 @@ static int check_redeclaration(compiler *cs, const ltoken *name, const function 
     for (int i = 0; i < f->n_params; i++)
         if (f->qual[i] != old->qual[i])
             return fail_at(cs, name,
-                           "parameter %d of '%s' is '%s' here but '%s' where first declared",
-                           i + 1, old->name, qualifier_name(f->qual[i]),
-                           qualifier_name(old->qual[i]));
+                           "parameter %d of '%s' is '%s' here but '%s' where first declared", i + 1,
+                           old->name, qualifier_name(f->qual[i]), qualifier_name(old->qual[i]));
     return 0;
 }
 
 /* The function's entry in the table, *index: the earlier declaration of the same parameter
  * types, or a new one with its parameter and result registers. */
-static int declare_function(compiler *cs, const ltoken *name, sc_ltype ret, function *f,
-                            int *index)
+static int declare_function(compiler *cs, const ltoken *name, sc_ltype ret, function *f, int *index)
 {
     const function *old = find_overload(cs, name, f->params, f->n_params);
     if (old) {
@@ -637,8 +636,8 @@ static int parse_jump(compiler *cs)
     while (loop && !is_break && loop->is_switch)
         loop = loop->enclosing;
     if (!loop)
-        return fail_at(cs, &at, "%s", is_break ? "'break' outside a loop or switch"
-                                               : "'continue' outside a loop");
+        return fail_at(cs, &at, "%s",
+                       is_break ? "'break' outside a loop or switch" : "'continue' outside a loop");
     next(cs);
     int *chain = is_break ? &loop->break_chain : &loop->continue_chain;
     int i = emit_at(cs, &at, OP_JMP, 0, 0, 0, *chain, 0);
@@ -744,9 +743,8 @@ static int at_declaration(const compiler *cs)
     if (is_word(cs, "const") || is_precision_word(&cs->tok) || is_word(cs, "struct"))
         return 1;
     ltoken after = peek(cs);
-    return at_type(cs) &&
-           (after.kind == T_IDENT ||
-            (after.kind == T_PUNCT && after.punct == '[' && array_type_declares(cs)));
+    return at_type(cs) && (after.kind == T_IDENT || (after.kind == T_PUNCT && after.punct == '[' &&
+                                                     array_type_declares(cs)));
 }
 
 static int skip_precision_statement(compiler *cs)
@@ -786,11 +784,10 @@ static int parse_keyword_statement(compiler *cs)
 
 static int is_statement_keyword(const compiler *cs)
 {
-    static const char *const words[] = {"if",        "for",     "while",     "do",        "break",
-                                        "continue",  "return",  "precision", "discard",   "switch",
-                                        "case",      "default", "uniform",   "in",        "out",
-                                        "inout",
-                                        "attribute", "varying", "layout",    "invariant", NULL};
+    static const char *const words[] = {
+        "if",        "for",     "while",     "do",      "break",   "continue",  "return",
+        "precision", "discard", "switch",    "case",    "default", "uniform",   "in",
+        "out",       "inout",   "attribute", "varying", "layout",  "invariant", NULL};
     for (int i = 0; words[i]; i++)
         if (is_word(cs, words[i]))
             return 1;
@@ -916,8 +913,7 @@ static int check_calls(compiler *cs)
     free(pending);
     ltoken at = {.line = c->line, .column = c->column};
     return fail_at(cs, &at, "'%s' calls '%s', which leads back to '%s': GLSL ES forbids recursion",
-                   cs->funcs[c->caller].name, cs->funcs[c->callee].name,
-                   cs->funcs[c->caller].name);
+                   cs->funcs[c->caller].name, cs->funcs[c->callee].name, cs->funcs[c->caller].name);
 }
 
 static int compile_into(compiler *cs, const sc_lang_input *inputs, int n_inputs)

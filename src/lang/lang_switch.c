@@ -62,7 +62,8 @@ static int parse_label(compiler *cs, switch_ctx *sw)
         if (parse_assignment(cs, &v) < 0)
             return -1;
         if (!v.is_literal || !sc_lt_equal(v.type, sw->type))
-            return fail_at(cs, &at, "a case label must be a constant %s expression (the selector's type)",
+            return fail_at(cs, &at,
+                           "a case label must be a constant %s expression (the selector's type)",
                            type_str(cs, sw->type, tb));
         if (add_case(cs, sw, &at, v.literal) < 0)
             return -1;

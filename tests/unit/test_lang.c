@@ -556,9 +556,9 @@ static void structures_construct_select_assign_and_compare(void **state)
     assert_int_equal(r.n, 2);
     assert_true(r.v[0].v[0] == 5.0 && r.v[1].v[0] == 5.0);
     /* members of array elements at computed indices, read and written */
-    assert_true(scalar("struct T { int a; int b; }; T ts[3];\n"
-                       "for (int i = 0; i < 3; i++) ts[i].b = i + 1; ts[2].b * ts[1].b + ts[0].a;") ==
-                6.0);
+    assert_true(
+        scalar("struct T { int a; int b; }; T ts[3];\n"
+               "for (int i = 0; i < 3; i++) ts[i].b = i + 1; ts[2].b * ts[1].b + ts[0].a;") == 6.0);
     assert_true(scalar("struct P { vec2 pos; float w; }; P ps[2]; int i = 1;\n"
                        "ps[i] = P(vec2(3.0), 4.0); ps[1].w + ps[0].w;") == 4.0);
     assert_true(scalar("struct P { vec2 pos; float w; };\n"
@@ -588,9 +588,8 @@ static void aggregates_print_element_by_element(void **state)
 {
     (void)state;
     sc_lang_error err;
-    sc_program *prog =
-        sc_program_compile("struct S { float x; ivec2 v[2]; };\nS s; s; float[2](1.0, 2.0);", NULL, 0,
-                           NULL, &err);
+    sc_program *prog = sc_program_compile(
+        "struct S { float x; ivec2 v[2]; };\nS s; s; float[2](1.0, 2.0);", NULL, 0, NULL, &err);
     assert_non_null(prog);
     texts t = {.n = 0};
     assert_int_equal(sc_program_run(prog, SC_HIGHP, NULL, collect_text, NULL, &t, &err), 0);
@@ -616,9 +615,10 @@ static void switch_selects_falls_through_and_breaks(void **state)
         assert_true(scalar(src) == want[i]);
     }
     /* continue belongs to the loop; break to the switch: 2 × (10 + 1 + 2 × 100) */
-    assert_true(scalar("int s = 0; for (int i = 0; i < 6; i++) { switch (i % 3) {\n"
-                       "case 0: continue; case 1: s += 10; break; default: s += 1; } s += 100; } s;") ==
-                422.0);
+    assert_true(
+        scalar("int s = 0; for (int i = 0; i < 6; i++) { switch (i % 3) {\n"
+               "case 0: continue; case 1: s += 10; break; default: s += 1; } s += 100; } s;") ==
+        422.0);
     assert_true(scalar("uint u = 3u; int r = 0; switch (u) { case 1u + 2u: r = 1; } r;") == 1.0);
     assert_true(scalar("int r = 0; switch (5) { case 1: r = 1; } r;") == 0.0); /* no label */
     assert_true(scalar("int r = 0; switch (1) { case 1: switch (2) { case 2: r += 1; break; }\n"
