@@ -14,9 +14,9 @@
  *   sc_program_free
  *
  * The language is described in the man page (EVAL FILES): declarations, `const`, blocks,
- * if/else, for/while/do with break/continue, functions with in/out/inout parameters and
- * overloading, every operator of GLSL ES 3.00 §5 except the comma in declarations of arrays
- * (arrays and structures are not supported). Types are checked as GLSL ES checks them: no
+ * if/else, for/while/do with break/continue, switch, functions with in/out/inout parameters,
+ * overloading and prototypes, every operator of GLSL ES 3.00 §5, one-dimensional arrays of any
+ * other type and structures (§4.1.8, §4.1.9). Types are checked as GLSL ES checks them: no
  * implicit conversions (`1 + 2.0` is an error). Integers are two's complement of the
  * precision's width (32 bits in double and highp, 16 in mediump, 9 in lowp): every result wraps
  * to that width. Recursion is an error, as GLSL ES says; loops stop with an error past
@@ -84,7 +84,9 @@ sc_program *sc_program_compile(const char *src, const sc_lang_input *inputs, int
 void sc_program_free(sc_program *prog);
 
 /* Receives each top-level expression statement's value: its source text (not terminated,
- * `len` bytes), its line, and the value. Returns 0 to go on, nonzero to stop the run. */
+ * `len` bytes), its line, and the value. An array or structure comes one element or member
+ * (recursively) at a time, its text the expression's followed by the path: `a[0]`, `s.pos`,
+ * `s.w[1]`. Returns 0 to go on, nonzero to stop the run. */
 typedef int (*sc_lang_emit_fn)(void *user, const char *text, int len, int line,
                                const sc_lvalue *value);
 /* Called for an argument outside a built-in's GLSL ES domain, an integer division by zero or a

@@ -59,8 +59,6 @@ int expect(compiler *cs, int p, const char *what)
     return 0;
 }
 
-const char *type_str(sc_ltype t, char *buf) { return sc_ltype_name(t, buf, 16); }
-
 /* ---- emitting ---- */
 
 int alloc_regs(compiler *cs, int n)
@@ -111,7 +109,7 @@ int const_reg(compiler *cs, sc_kind kind, double value)
     return reg;
 }
 
-static operand value_at(sc_ltype t, int reg)
+operand value_at(sc_ltype t, int reg)
 {
     operand o;
     memset(&o, 0, sizeof o);
@@ -125,7 +123,7 @@ static operand value_at(sc_ltype t, int reg)
 /* A register holding a copy of o's value (so that later stores do not change it). */
 static int copy_of(compiler *cs, const operand *o, const ltoken *at)
 {
-    int n = sc_ltype_size(o->type), reg = alloc_regs(cs, n);
+    int n = type_size(cs, o->type), reg = alloc_regs(cs, n);
     if (reg < 0 || emit_at(cs, at, OP_MOV, reg, o->reg, 0, 0, n) < 0)
         return -1;
     return reg;
@@ -142,7 +140,8 @@ static const char *const keywords[] = {
 int is_reserved(const char *s, int len)
 {
     sc_ltype t;
-    if (sc_lt_parse(s, len, &t) == 0 || sc_builtin_exists(s, len) || sc_lang_builtin_exists(s, len))
+    if (sc_lt_parse(s, len, &t) == 0 || sc_builtin_exists(s, len) ||
+        sc_lang_builtin_exists(s, len) || (len == 4 && strncmp(s, "modf", 4) == 0))
         return 1;
     for (int i = 0; keywords[i]; i++)
         if ((int)strlen(keywords[i]) == len && strncmp(keywords[i], s, (size_t)len) == 0)
@@ -209,24 +208,29 @@ static int check_construct(compiler *cs, const ltoken *at, sc_ltype t, const ope
     char tb[16], ab[16];
     int need = sc_ltype_size(t), have = 0;
     if (n_args == 0)
-        return fail_at(cs, at, "%s: expects at least 1 argument", type_str(t, tb));
+        return fail_at(cs, at, "%s: expects at least 1 argument", type_str(cs, t, tb));
+    for (int i = 0; i < n_args; i++)
+        if (is_aggregate(args[i].type))
+            return fail_at(cs, at,
+                           "%s: argument %d is %s (an array or structure is not components)",
+                           type_str(cs, t, tb), i + 1, type_str(cs, args[i].type, ab));
     if (n_args == 1 && (sc_lt_is_scalar(t) || sc_lt_is_scalar(args[0].type) ||
                         (sc_lt_is_matrix(t) && sc_lt_is_matrix(args[0].type))))
         return 0;
     if (sc_lt_is_scalar(t))
-        return fail_at(cs, at, "%s: expects 1 argument, got %d", type_str(t, tb), n_args);
+        return fail_at(cs, at, "%s: expects 1 argument, got %d", type_str(cs, t, tb), n_args);
     for (int i = 0; i < n_args; i++) {
         if (sc_lt_is_matrix(t) && sc_lt_is_matrix(args[i].type))
             return fail_at(cs, at, "%s: argument %d is %s; a matrix constructs a matrix only alone",
-                           type_str(t, tb), i + 1, type_str(args[i].type, ab));
+                           type_str(cs, t, tb), i + 1, type_str(cs, args[i].type, ab));
         if (have >= need)
             return fail_at(cs, at, "%s: too many arguments (argument %d is not used)",
-                           type_str(t, tb), i + 1);
+                           type_str(cs, t, tb), i + 1);
         have += sc_ltype_size(args[i].type);
     }
     if (have < need)
-        return fail_at(cs, at, "%s: not enough components (%d given, %d needed)", type_str(t, tb),
-                       have, need);
+        return fail_at(cs, at, "%s: not enough components (%d given, %d needed)",
+                       type_str(cs, t, tb), have, need);
     return 0;
 }
 
@@ -298,8 +302,8 @@ static int add_call(compiler *cs, builtin_call call)
 }
 
 /* The float built-ins of expr/builtins.c: every argument float, vecN or matN. */
-static int resolve_float_builtin(const ltoken *name, const operand *args, int n_args,
-                                 builtin_call *call, char *msg, int msg_size)
+static int resolve_float_builtin(const compiler *cs, const ltoken *name, const operand *args,
+                                 int n_args, builtin_call *call, char *msg, int msg_size)
 {
     sc_type types[4], result;
     for (int i = 0; i < n_args; i++)
@@ -308,7 +312,7 @@ static int resolve_float_builtin(const ltoken *name, const operand *args, int n_
             snprintf(msg, (size_t)msg_size,
                      "%.*s: argument %d is %s, and there is no such overload (GLSL ES converts "
                      "nothing implicitly)",
-                     name->len, name->start, i + 1, type_str(args[i].type, tb));
+                     name->len, name->start, i + 1, type_str(cs, args[i].type, tb));
             return -1;
         }
     call->index = sc_builtin_resolve(name->start, name->len, types, n_args, &result, msg, msg_size);
@@ -374,13 +378,18 @@ static int call_builtin(compiler *cs, const ltoken *name, const operand *args, i
     sc_ltype types[4];
     if (n_args > 4)
         return fail_at(cs, name, "%.*s: too many arguments", name->len, name->start);
+    for (int i = 0; i < n_args; i++)
+        if (is_aggregate(args[i].type))
+            return fail_at(cs, name,
+                           "%.*s: argument %d is %s; built-ins take no arrays or structures",
+                           name->len, name->start, i + 1, type_str(cs, args[i].type, msg));
     for (int i = 0; i < n_args; i++) {
         types[i] = call.types[i] = args[i].type;
         call.args[i] = args[i].reg;
     }
     int found = -1;
     if (all_float_shaped(args, n_args) && sc_builtin_exists(name->start, name->len))
-        found = resolve_float_builtin(name, args, n_args, &call, msg, (int)sizeof msg);
+        found = resolve_float_builtin(cs, name, args, n_args, &call, msg, (int)sizeof msg);
     if (found < 0 && sc_lang_builtin_exists(name->start, name->len)) {
         char lmsg[160];
         found = sc_lang_builtin_resolve(name->start, name->len, types, n_args, &call.result, lmsg,
@@ -390,7 +399,7 @@ static int call_builtin(compiler *cs, const ltoken *name, const operand *args, i
         if (!msg[0])
             snprintf(msg, sizeof msg, "%s", lmsg);
     } else if (found < 0 && !msg[0]) {
-        found = resolve_float_builtin(name, args, n_args, &call, msg, (int)sizeof msg);
+        found = resolve_float_builtin(cs, name, args, n_args, &call, msg, (int)sizeof msg);
     }
     if (found < 0 && cs->implicit && !all_float_shaped(args, n_args) &&
         sc_builtin_exists(name->start, name->len))
@@ -406,7 +415,9 @@ static int call_builtin(compiler *cs, const ltoken *name, const operand *args, i
 
 /* ---- primary expressions ---- */
 
-static int parse_args(compiler *cs, operand *args, int *n_args)
+/* '(' arguments ')' into *args, a buffer of *cap operands; a heap buffer grows (the arguments
+ * of an array's or a structure's constructor), a fixed one ends at MAX_CALL_ARGS. */
+static int parse_arg_list(compiler *cs, operand **args, int *n_args, int *cap, int on_heap)
 {
     *n_args = 0;
     next(cs); /* '(' */
@@ -415,12 +426,14 @@ static int parse_args(compiler *cs, operand *args, int *n_args)
         return 0;
     }
     for (;;) {
-        if (*n_args == MAX_CALL_ARGS)
+        if (*n_args == *cap && !on_heap)
             return fail_at(cs, &cs->tok, "too many arguments (at most %d)", MAX_CALL_ARGS);
+        if (*n_args == *cap && sc_expr_grow((void **)args, cap, *n_args + 1, sizeof **args) < 0)
+            return fail_at(cs, NULL, "out of memory");
         ltoken at = cs->tok;
-        if (parse_assignment(cs, &args[(*n_args)++]) < 0)
+        if (parse_assignment(cs, &(*args)[(*n_args)++]) < 0)
             return -1;
-        if (args[*n_args - 1].type.kind > SC_KIND_BOOL)
+        if (is_void((*args)[*n_args - 1].type))
             return fail_at(cs, &at, "a void function's result is not a value");
         if (is_punct(cs, ')')) {
             next(cs);
@@ -431,13 +444,73 @@ static int parse_args(compiler *cs, operand *args, int *n_args)
     }
 }
 
+static int parse_args(compiler *cs, operand *args, int *n_args)
+{
+    int cap = MAX_CALL_ARGS;
+    return parse_arg_list(cs, &args, n_args, &cap, 0);
+}
+
+/* The constructor of array or structure type t (an array of unknown size when unsized). */
+static int parse_aggregate_constructor(compiler *cs, const ltoken *name, sc_ltype t, int unsized,
+                                       operand *out)
+{
+    operand *args = NULL;
+    int n_args, cap = 0;
+    if (!is_punct(cs, '('))
+        return fail_expected(cs, "'(' after an array type (a constructor)");
+    int status = parse_arg_list(cs, &args, &n_args, &cap, 1);
+    if (status == 0)
+        status = construct_aggregate(cs, name, t, unsized, args, n_args, out);
+    free(args);
+    return status;
+}
+
+static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a, const operand *b,
+                      operand *out);
+
+/* modf(x, out i) (§8.3): i = trunc(x) and the result x - i, as Mesa computes them (exact). */
+static int call_modf(compiler *cs, const ltoken *name, operand *args, int n_args, operand *out)
+{
+    char tb[16];
+    if (n_args != 2 || args[0].type.kind != SC_KIND_FLOAT || args[0].type.cols != 1 ||
+        !sc_lt_equal(args[0].type, args[1].type))
+        return fail_at(cs, name, "modf takes (x, out i) of one type, float or vecN; not (%s, ...)",
+                       n_args ? type_str(cs, args[0].type, tb) : "");
+    if (!args[1].lv)
+        return fail_at(cs, name,
+                       "argument 2 of 'modf' is an out parameter: it must be a variable, not %s",
+                       args[1].why);
+    ltoken trunc_name = *name;
+    trunc_name.start = "trunc";
+    trunc_name.len = 5;
+    operand whole;
+    if (call_builtin(cs, &trunc_name, args, 1, &whole) < 0 ||
+        arithmetic(cs, name, OP_SUB, &args[0], &whole, out) < 0)
+        return -1;
+    return store(cs, &args[1], whole.reg, name);
+}
+
+/* The type a name gives (a built-in type other than void, or a structure): 1, else 0. */
+static int names_type(const compiler *cs, const ltoken *name, sc_ltype *t)
+{
+    const variable *s = find_struct(cs, name->start, name->len);
+    if (s)
+        *t = s->type;
+    return s || (sc_lt_parse(name->start, name->len, t) == 0 && !is_void(*t));
+}
+
 static int parse_call(compiler *cs, const ltoken *name, operand *out)
 {
     operand args[MAX_CALL_ARGS];
     int n_args;
+    const variable *s = find_struct(cs, name->start, name->len);
+    if (s)
+        return parse_aggregate_constructor(cs, name, s->type, 0, out);
     if (parse_args(cs, args, &n_args) < 0)
         return -1;
     sc_ltype t;
+    if (token_is_word(name, "modf"))
+        return call_modf(cs, name, args, n_args, out);
     if (sc_lt_parse(name->start, name->len, &t) == 0) {
         if (t.kind > SC_KIND_BOOL)
             return fail_at(cs, name, "void is not a constructor");
@@ -454,8 +527,15 @@ static int parse_identifier(compiler *cs, operand *out)
 {
     ltoken name = cs->tok;
     next(cs);
+    sc_ltype t;
     if (is_punct(cs, '('))
         return parse_call(cs, &name, out);
+    if (is_punct(cs, '[') && names_type(cs, &name, &t)) {
+        int unsized = 0;
+        if (parse_array_suffix(cs, t, &t, &unsized) < 0)
+            return -1;
+        return parse_aggregate_constructor(cs, &name, t, unsized, out);
+    }
     if (token_is_word(&name, "true") || token_is_word(&name, "false")) {
         int reg = const_reg(cs, SC_KIND_BOOL, token_is_word(&name, "true"));
         *out = value_at(sc_lt(SC_KIND_BOOL, 1, 1), reg);
@@ -467,7 +547,11 @@ static int parse_identifier(compiler *cs, operand *out)
             return fail_at(cs, &name, "'%.*s' is not a variable", name.len, name.start);
         return fail_at(cs, &name, "unknown variable '%.*s'", name.len, name.start);
     }
+    if (v->is_type)
+        return fail_at(cs, &name, "'%.*s' is a structure, not a variable", name.len, name.start);
     *out = value_at(v->type, v->reg);
+    out->is_literal = v->has_value;
+    out->literal = v->value;
     out->lv = !v->is_const;
     out->why = "a constant";
     out->lv_reg = v->reg;
@@ -523,7 +607,7 @@ static int read_swizzle(compiler *cs, const ltoken *t, sc_ltype bt, unsigned cha
         int set, k = sc_swizzle_component(t->start[i], &set);
         if (k < 0 || k >= bt.rows)
             return fail_at(cs, t, "swizzle '%.*s' names a component a %s does not have", t->len,
-                           t->start, type_str(bt, tb));
+                           t->start, type_str(cs, bt, tb));
         if (first_set >= 0 && set != first_set)
             return fail_at(cs, t, "swizzle '%.*s' mixes component sets (xyzw, rgba, stpq)", t->len,
                            t->start);
@@ -541,7 +625,9 @@ static int parse_length_method(compiler *cs, operand *o)
     next(cs); /* length */
     if (expect(cs, '(', "'(' after 'length'") < 0 || expect(cs, ')', "')'") < 0)
         return -1;
-    int n = sc_lt_is_matrix(o->type) ? o->type.cols : o->type.rows;
+    int n = is_array(cs, o->type)      ? aggregate_of(cs, o->type)->length
+            : sc_lt_is_matrix(o->type) ? o->type.cols
+                                       : o->type.rows;
     int reg = const_reg(cs, SC_KIND_INT, n);
     *o = value_at(sc_lt(SC_KIND_INT, 1, 1), reg);
     o->is_literal = 1;
@@ -551,17 +637,20 @@ static int parse_length_method(compiler *cs, operand *o)
 
 static int parse_swizzle(compiler *cs, operand *o)
 {
+    if (is_struct(cs, o->type))
+        return parse_member(cs, o);
     ltoken dot = cs->tok;
     next(cs);
     ltoken t = cs->tok;
     char tb[16];
     if (t.kind != T_IDENT)
         return fail_expected(cs, "swizzle letters after '.'");
-    if (token_is_word(&t, "length") && (sc_lt_is_vector(o->type) || sc_lt_is_matrix(o->type)))
+    if (token_is_word(&t, "length") &&
+        (sc_lt_is_vector(o->type) || sc_lt_is_matrix(o->type) || is_array(cs, o->type)))
         return parse_length_method(cs, o);
     if (!sc_lt_is_vector(o->type))
         return fail_at(cs, &dot, "cannot swizzle a %s (only vectors have components)",
-                       type_str(o->type, tb));
+                       type_str(cs, o->type, tb));
     unsigned char comp[4] = {0, 0, 0, 0};
     int repeats, n = t.len;
     if (read_swizzle(cs, &t, o->type, comp, &repeats) < 0)
@@ -595,7 +684,8 @@ static int check_index(compiler *cs, const ltoken *at, const operand *idx, int c
 {
     char tb[16];
     if (!sc_lt_is_integer(idx->type) || !sc_lt_is_scalar(idx->type))
-        return fail_at(cs, at, "an index must be an int or uint, not %s", type_str(idx->type, tb));
+        return fail_at(cs, at, "an index must be an int or uint, not %s",
+                       type_str(cs, idx->type, tb));
     if (idx->is_literal && !(idx->literal >= 0 && idx->literal < count))
         return fail_at(cs, at, "index %.0f is out of range 0..%d", idx->literal, count - 1);
     return 0;
@@ -605,19 +695,28 @@ static int parse_index(compiler *cs, operand *o)
 {
     ltoken bracket = cs->tok;
     char tb[16];
-    if (!sc_lt_is_vector(o->type) && !sc_lt_is_matrix(o->type))
-        return fail_at(cs, &bracket, "cannot index a %s", type_str(o->type, tb));
+    const aggregate *a = is_array(cs, o->type) ? aggregate_of(cs, o->type) : NULL;
+    if (!sc_lt_is_vector(o->type) && !sc_lt_is_matrix(o->type) && !a)
+        return fail_at(cs, &bracket, "cannot index a %s", type_str(cs, o->type, tb));
     next(cs);
     operand idx;
     if (parse_expression(cs, &idx) < 0 || expect(cs, ']', "']'") < 0)
         return -1;
-    int count = sc_lt_is_matrix(o->type) ? o->type.cols : o->type.rows;
-    int stride = sc_lt_is_matrix(o->type) ? o->type.rows : 1;
+    int count = a ? a->length : sc_lt_is_matrix(o->type) ? o->type.cols : o->type.rows;
+    int stride = a ? type_size(cs, a->elem) : sc_lt_is_matrix(o->type) ? o->type.rows : 1;
     if (check_index(cs, &bracket, &idx, count) < 0)
         return -1;
     operand r = *o;
-    r.type = sc_lt(o->type.kind, 1, stride);
+    r.type = a ? a->elem : sc_lt(o->type.kind, 1, stride);
     r.is_literal = 0;
+    if (idx.is_literal && a) {
+        *o = part_of(o, r.type, (int)idx.literal * stride);
+        return 0;
+    }
+    if (stride > 255)
+        return fail_at(cs, &bracket,
+                       "an element of %d components cannot be indexed at run time (at most 255)",
+                       stride);
     if (idx.is_literal) {
         int i = (int)idx.literal;
         r.reg = o->reg + i * stride;
@@ -642,7 +741,7 @@ static int parse_index(compiler *cs, operand *o)
     r.lv_index = idx.reg;
     r.lv_stride = stride;
     r.lv_count = count;
-    for (int k = 0; k < stride; k++)
+    for (int k = 0; k < sc_ltype_size(r.type); k++)
         r.lv_comp[k] = (unsigned char)k;
     *o = r;
     return 0;
@@ -657,6 +756,16 @@ static int check_assignable(compiler *cs, const ltoken *at, const operand *o)
 
 int store(compiler *cs, const operand *lv, int src, const ltoken *at)
 {
+    if (is_aggregate(lv->type)) { /* one block: its registers are consecutive */
+        int n = type_size(cs, lv->type);
+        int i = lv->lv_index < 0
+                    ? emit_at(cs, at, OP_MOV, lv->lv_reg, src, 0, 0, n)
+                    : emit_at(cs, at, OP_STORE, lv->lv_reg, src, lv->lv_index, lv->lv_count, n);
+        if (i < 0)
+            return -1;
+        cs->prog->code[i].kind = (unsigned char)lv->lv_stride;
+        return 0;
+    }
     for (int k = 0; k < sc_ltype_size(lv->type); k++) {
         int i = lv->lv_index < 0
                     ? emit_at(cs, at, OP_MOV, lv->lv_reg + lv->lv_comp[k], src + k, 0, 0, 1)
@@ -678,9 +787,9 @@ static int increment(compiler *cs, const ltoken *op, operand *o, int prefix)
     char tb[16];
     if (check_assignable(cs, op, o) < 0)
         return -1;
-    if (o->type.kind == SC_KIND_BOOL)
+    if (o->type.kind == SC_KIND_BOOL || is_aggregate(o->type))
         return fail_at(cs, op, "operator '%.2s' needs a number, not %s", op->start,
-                       type_str(o->type, tb));
+                       type_str(cs, o->type, tb));
     int old = prefix ? o->reg : copy_of(cs, o, op);
     operand one = value_at(sc_lt(o->type.kind, 1, 1), const_reg(cs, o->type.kind, 1.0));
     operand sum;
@@ -756,7 +865,7 @@ static int mismatch(compiler *cs, const ltoken *op, sc_ltype a, sc_ltype b)
     return fail_at(cs, op,
                    "operator '%s': operands %s and %s do not match (GLSL ES converts "
                    "nothing implicitly)",
-                   op_text(op, ob), type_str(a, ab), type_str(b, bb));
+                   op_text(op, ob), type_str(cs, a, ab), type_str(cs, b, bb));
 }
 
 static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const operand *b, int dst)
@@ -774,14 +883,43 @@ static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const o
     return emit_at(cs, op, OP_MATMUL, dst, a->reg, b->reg, pr->n_aux - 3, 0);
 }
 
+/* The value of a op b when both are integer constant expressions (GLSL ES §4.3.3, for array
+ * sizes and case labels): 1 and *value, else 0. Computed in 32 bits, as highp. */
+static int fold(int code, sc_ltype t, const operand *a, const operand *b, double *value)
+{
+    if (!a->is_literal || !b->is_literal || !sc_lt_is_scalar(t) || !sc_lt_is_integer(t))
+        return 0;
+    long long x = (long long)a->literal, y = (long long)b->literal;
+    unsigned long long ux = (unsigned long long)x, uy = (unsigned long long)y, u;
+    switch (code) {
+    case OP_ADD: u = ux + uy; break;
+    case OP_SUB: u = ux - uy; break;
+    case OP_MUL: u = ux * uy; break;
+    case OP_DIV:
+    case OP_MOD:
+        if (y == 0)
+            return 0;
+        u = (unsigned long long)(code == OP_DIV ? x / y : x % y);
+        break;
+    case OP_BITAND: u = ux & uy; break;
+    case OP_BITOR: u = ux | uy; break;
+    case OP_BITXOR: u = ux ^ uy; break;
+    default: return 0;
+    }
+    *value = sc_int_wrap_bits((sc_kind)t.kind, 32, u);
+    return 1;
+}
+
 /* a op b for + - * / % & | ^ (component-wise, a scalar broadcast) and the matrix products. */
 static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a0,
                       const operand *b0, operand *out)
 {
     sc_ltype t;
     int matmul;
+    char ob[4];
     operand wa = *a0, wb = *b0, *a = &wa, *b = &wb;
-    if (widen_pair(cs, op, a, b) < 0)
+    if (not_aggregate(cs, op, op_text(op, ob), a0) < 0 ||
+        not_aggregate(cs, op, op_text(op, ob), b0) < 0 || widen_pair(cs, op, a, b) < 0)
         return -1;
     if (arithmetic_type(a->type, b->type, code, &t, &matmul) < 0)
         return mismatch(cs, op, a->type, b->type);
@@ -797,6 +935,7 @@ static int arithmetic(compiler *cs, const ltoken *op, int code, const operand *a
     cs->prog->code[i].kind = t.kind;
     cs->prog->code[i].flags = (unsigned char)((sc_lt_is_scalar(a->type) ? BCAST_A : 0) |
                                               (sc_lt_is_scalar(b->type) ? BCAST_B : 0));
+    out->is_literal = fold(code, t, a, b, &out->literal);
     return 0;
 }
 
@@ -844,13 +983,13 @@ static int comparison(compiler *cs, const ltoken *op, const operand *a0, const o
         return mismatch(cs, op, a->type, b->type);
     if (p == P_EQ || p == P_NE)
         return bool_result(cs, op, p == P_EQ ? OP_EQ : OP_NE, a->reg, b->reg,
-                           sc_ltype_size(a->type), a->type.kind, out);
+                           type_size(cs, a->type), a->type.kind, out);
     if (!sc_lt_is_scalar(a->type) || a->type.kind == SC_KIND_BOOL) {
         char ob[4], tb[16];
         return fail_at(cs, op,
                        "operator '%s' compares scalar numbers, not %s (for vectors: "
                        "lessThan, greaterThan ...)",
-                       op_text(op, ob), type_str(a->type, tb));
+                       op_text(op, ob), type_str(cs, a->type, tb));
     }
     int swap = p == '>' || p == P_GE; /* a > b is b < a */
     int code = p == '<' || p == '>' ? OP_LT : OP_LE;
@@ -865,7 +1004,7 @@ static int logical_operand(compiler *cs, const ltoken *op, const operand *o)
     char ob[4], tb[16];
     if (!is_bool_scalar(o->type))
         return fail_at(cs, op, "operator '%s' needs bool operands, not %s", op_text(op, ob),
-                       type_str(o->type, tb));
+                       type_str(cs, o->type, tb));
     return 0;
 }
 
@@ -937,7 +1076,7 @@ static int parse_binary(compiler *cs, int min_prec, operand *out)
     const binop *b;
     while ((b = current_binop(cs)) && b->prec >= min_prec) {
         ltoken op = cs->tok;
-        if (out->type.kind > SC_KIND_BOOL)
+        if (is_void(out->type))
             return fail_at(cs, &op, "a void function's result is not a value");
         next(cs);
         out->is_assignment = 0;
@@ -962,7 +1101,7 @@ static int unary_operator(compiler *cs, const ltoken *op, operand *o)
              : p == '~' ? sc_lt_is_integer(o->type) && !sc_lt_is_matrix(o->type)
                         : is_bool_scalar(o->type);
     if (!ok || o->type.kind > SC_KIND_BOOL)
-        return fail_at(cs, op, "operator '%c' cannot apply to %s", p, type_str(o->type, tb));
+        return fail_at(cs, op, "operator '%c' cannot apply to %s", p, type_str(cs, o->type, tb));
     int n = sc_ltype_size(o->type), dst = alloc_regs(cs, n);
     int i = dst < 0 ? -1 : emit_at(cs, op, code, dst, o->reg, 0, 0, n);
     if (i < 0)
@@ -984,6 +1123,7 @@ static int parse_unary(compiler *cs, operand *out)
                        "and blocks)",
                        MAX_DEPTH);
     int status;
+    char tb[16];
     ltoken op = cs->tok;
     if (op.kind == T_PUNCT && (op.punct == '-' || op.punct == '+' || op.punct == '!' ||
                                op.punct == '~' || op.punct == P_INC || op.punct == P_DEC)) {
@@ -993,8 +1133,9 @@ static int parse_unary(compiler *cs, operand *out)
             status = increment(cs, &op, out, 1);
         else if (status == 0 && op.punct != '+')
             status = unary_operator(cs, &op, out);
-        else if (status == 0 && out->type.kind == SC_KIND_BOOL)
-            status = fail_at(cs, &op, "operator '+' cannot apply to bool");
+        else if (status == 0 && (out->type.kind == SC_KIND_BOOL || is_aggregate(out->type)))
+            status = fail_at(cs, &op, "operator '+' cannot apply to %s",
+                             type_str(cs, out->type, tb));
         if (status == 0 && op.punct == '+')
             out->lv = 0, out->why = "an expression";
     } else {
@@ -1014,7 +1155,7 @@ int parse_condition(compiler *cs, int *reg)
     if (parse_expression(cs, &c) < 0)
         return -1;
     if (!is_bool_scalar(c.type))
-        return fail_at(cs, &at, "a condition must be a bool, not %s", type_str(c.type, tb));
+        return fail_at(cs, &at, "a condition must be a bool, not %s", type_str(cs, c.type, tb));
     *reg = c.reg;
     return 0;
 }
@@ -1028,13 +1169,13 @@ static int parse_conditional(compiler *cs, operand *out)
     ltoken q = cs->tok;
     char tb[16], ab[16];
     if (!is_bool_scalar(out->type))
-        return fail_at(cs, &q, "'?:' needs a bool condition, not %s", type_str(out->type, tb));
+        return fail_at(cs, &q, "'?:' needs a bool condition, not %s", type_str(cs, out->type, tb));
     next(cs);
     int to_else = emit_at(cs, &q, OP_JZ, 0, out->reg, 0, -1, 0);
     operand a, b;
     if (to_else < 0 || parse_expression(cs, &a) < 0)
         return -1;
-    int n = sc_ltype_size(a.type), r = alloc_regs(cs, n);
+    int n = type_size(cs, a.type), r = alloc_regs(cs, n);
     if (r < 0 || emit_at(cs, &q, OP_MOV, r, a.reg, 0, 0, n) < 0 || expect(cs, ':', "':'") < 0)
         return -1;
     int to_end = emit_at(cs, &q, OP_JMP, 0, 0, 0, -1, 0);
@@ -1043,7 +1184,7 @@ static int parse_conditional(compiler *cs, operand *out)
         return -1;
     if (!sc_lt_equal(a.type, b.type))
         return fail_at(cs, &q, "'?:' branches have different types, %s and %s",
-                       type_str(a.type, tb), type_str(b.type, ab));
+                       type_str(cs, a.type, tb), type_str(cs, b.type, ab));
     if (emit_at(cs, &q, OP_MOV, r, b.reg, 0, 0, n) < 0)
         return -1;
     patch_chain(cs, to_end, here(cs));
@@ -1083,8 +1224,8 @@ static int assign(compiler *cs, const ltoken *op, int code, operand *lhs, const 
     if (widen_to(cs, op, lhs->type, &value) < 0)
         return -1;
     if (!sc_lt_equal(value.type, lhs->type))
-        return fail_at(cs, op, "cannot assign %s to %s", type_str(value.type, ab),
-                       type_str(lhs->type, bb));
+        return fail_at(cs, op, "cannot assign %s to %s", type_str(cs, value.type, ab),
+                       type_str(cs, lhs->type, bb));
     if (store(cs, lhs, value.reg, op) < 0)
         return -1;
     *lhs = value_at(lhs->type, value.reg);

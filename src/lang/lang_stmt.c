@@ -29,23 +29,43 @@ static int is_precision_word(const ltoken *t)
 int at_type(const compiler *cs)
 {
     sc_ltype t;
-    return cs->tok.kind == T_IDENT && sc_lt_parse(cs->tok.start, cs->tok.len, &t) == 0;
+    return cs->tok.kind == T_IDENT && (sc_lt_parse(cs->tok.start, cs->tok.len, &t) == 0 ||
+                                       find_struct(cs, cs->tok.start, cs->tok.len));
+}
+
+int parse_type_ex(compiler *cs, sc_ltype *t, int allow_void, int *unsized)
+{
+    if (is_precision_word(&cs->tok))
+        next(cs);
+    if (is_word(cs, "struct"))
+        return parse_struct(cs, t);
+    if (!at_type(cs))
+        return fail_expected(cs, "a type");
+    const variable *s = find_struct(cs, cs->tok.start, cs->tok.len);
+    if (s)
+        *t = s->type;
+    else
+        sc_lt_parse(cs->tok.start, cs->tok.len, t);
+    if (is_void(*t) && !allow_void)
+        return fail_at(cs, &cs->tok, "a variable cannot be void");
+    next(cs);
+    if (is_punct(cs, '[') && is_void(*t))
+        return fail_at(cs, &cs->tok, "an array cannot be of void");
+    return is_punct(cs, '[') ? parse_array_suffix(cs, *t, t, unsized) : 0;
 }
 
 int parse_type(compiler *cs, sc_ltype *t, int allow_void)
 {
-    if (is_precision_word(&cs->tok))
-        next(cs);
-    if (!at_type(cs))
-        return fail_expected(cs, "a type");
-    sc_lt_parse(cs->tok.start, cs->tok.len, t);
-    if (t->kind > SC_KIND_BOOL && !allow_void)
-        return fail_at(cs, &cs->tok, "a variable cannot be void");
-    next(cs);
-    return 0;
+    return parse_type_ex(cs, t, allow_void, NULL);
 }
 
 int declare_variable(compiler *cs, const ltoken *name, sc_ltype t, int is_const, int *reg)
+{
+    *reg = alloc_regs(cs, type_size(cs, t));
+    return *reg < 0 ? -1 : bind_variable(cs, name, t, is_const, *reg);
+}
+
+int bind_variable(compiler *cs, const ltoken *name, sc_ltype t, int is_const, int reg)
 {
     if (name->len >= MAX_NAME)
         return fail_at(cs, name, "name '%.20s...' is too long", name->start);
@@ -57,40 +77,66 @@ int declare_variable(compiler *cs, const ltoken *name, sc_ltype t, int is_const,
                        name->start);
     if (cs->scope == 0 && find_function(cs, name->start, name->len))
         return fail_at(cs, name, "'%.*s' is already a function", name->len, name->start);
-    *reg = alloc_regs(cs, sc_ltype_size(t));
-    if (*reg < 0)
-        return -1;
     if (sc_expr_grow((void **)&cs->vars, &cs->cap_vars, cs->n_vars + 1, sizeof *cs->vars) < 0)
         return fail_at(cs, NULL, "out of memory");
     variable *v = &cs->vars[cs->n_vars++];
     memset(v, 0, sizeof *v);
     memcpy(v->name, name->start, (size_t)name->len);
     v->type = t;
-    v->reg = *reg;
+    v->reg = reg;
     v->is_const = is_const;
     v->scope = cs->scope;
     return 0;
 }
 
-static void open_scope(compiler *cs) { cs->scope++; }
+void open_scope(compiler *cs) { cs->scope++; }
 
-static void close_scope(compiler *cs)
+void close_scope(compiler *cs)
 {
     while (cs->n_vars > 0 && cs->vars[cs->n_vars - 1].scope == cs->scope)
         cs->n_vars--;
     cs->scope--;
 }
 
-/* One declarator: NAME [= initializer]; the variable exists after its initializer. */
-static int parse_declarator(compiler *cs, sc_ltype t, int is_const)
+int zero_fill(compiler *cs, const ltoken *at, int reg, int n)
+{
+    int zero = const_reg(cs, SC_KIND_FLOAT, 0.0); /* 0 of every kind */
+    if (zero < 0 || emit_at(cs, at, OP_MOV, reg, zero, 0, 0, 1) < 0)
+        return -1;
+    for (int done = 1; done < n; done *= 2) /* doubling the zeroed prefix */
+        if (emit_at(cs, at, OP_MOV, reg + done, reg, 0, 0, n - done < done ? n - done : done) < 0)
+            return -1;
+    return 0;
+}
+
+/* The type of an unsized array's initializer (`float a[] = float[](...)`) when it is an array
+ * of elem; else elem (then the initializer's check fails). */
+static sc_ltype sized_by(const compiler *cs, sc_ltype elem, sc_ltype init)
+{
+    return is_array(cs, init) && sc_lt_equal(aggregate_of(cs, init)->elem, elem) ? init : elem;
+}
+
+/* NAME [ '[' [N] ']' ]: the declarator's type from the declaration's. */
+static int declarator_type(compiler *cs, sc_ltype *t, int *unsized)
+{
+    if (!is_punct(cs, '['))
+        return 0;
+    if (*unsized || is_array(cs, *t))
+        return fail_at(cs, &cs->tok, "arrays of arrays are not GLSL ES 3.00");
+    return parse_array_suffix(cs, *t, t, unsized);
+}
+
+/* One declarator: NAME [= initializer]; the variable exists after its initializer. A const
+ * integer scalar with a constant initializer is a constant expression. */
+static int parse_declarator(compiler *cs, sc_ltype t, int is_const, int unsized)
 {
     ltoken name = cs->tok;
     char ab[16], bb[16];
     if (name.kind != T_IDENT)
         return fail_expected(cs, "a variable name");
     next(cs);
-    if (is_punct(cs, '['))
-        return fail_at(cs, &cs->tok, "arrays are not supported");
+    if (declarator_type(cs, &t, &unsized) < 0)
+        return -1;
     operand init;
     int has_init = is_punct(cs, '=');
     ltoken eq = cs->tok;
@@ -98,29 +144,30 @@ static int parse_declarator(compiler *cs, sc_ltype t, int is_const)
         next(cs);
         if (parse_assignment(cs, &init) < 0 || widen_to(cs, &eq, t, &init) < 0)
             return -1;
+        t = unsized ? sized_by(cs, t, init.type) : t;
         if (!sc_lt_equal(init.type, t))
-            return fail_at(cs, &eq, "cannot initialize %s '%.*s' with %s", type_str(t, ab),
-                           name.len, name.start, type_str(init.type, bb));
-    } else if (is_const) {
-        return fail_at(cs, &name, "const '%.*s' needs an initializer", name.len, name.start);
+            return fail_at(cs, &eq, "cannot initialize %s%s '%.*s' with %s", type_str(cs, t, ab),
+                           unsized ? "[]" : "", name.len, name.start, type_str(cs, init.type, bb));
+    } else if (is_const || unsized) {
+        return fail_at(cs, &name, "%s '%.*s' needs an initializer",
+                       unsized ? "an array of unknown size" : "const", name.len, name.start);
     }
     int reg;
     if (declare_variable(cs, &name, t, is_const, &reg) < 0)
         return -1;
-    if (has_init)
-        return emit_at(cs, &eq, OP_MOV, reg, init.reg, 0, 0, sc_ltype_size(t)) < 0 ? -1 : 0;
+    if (has_init) {
+        cs->vars[cs->n_vars - 1].has_value = is_const && init.is_literal;
+        cs->vars[cs->n_vars - 1].value = init.literal;
+        return emit_at(cs, &eq, OP_MOV, reg, init.reg, 0, 0, type_size(cs, t)) < 0 ? -1 : 0;
+    }
     /* zero, also when a function's declaration runs again (its registers are static) */
-    int zero = const_reg(cs, (sc_kind)t.kind, 0.0);
-    for (int k = 0; k < sc_ltype_size(t) && zero >= 0; k++)
-        if (emit_at(cs, &name, OP_MOV, reg + k, zero, 0, 0, 1) < 0)
-            return -1;
-    return zero < 0 ? -1 : 0;
+    return zero_fill(cs, &name, reg, type_size(cs, t));
 }
 
-static int parse_declaration_rest(compiler *cs, sc_ltype t, int is_const)
+static int parse_declaration_rest(compiler *cs, sc_ltype t, int is_const, int unsized)
 {
     for (;;) {
-        if (parse_declarator(cs, t, is_const) < 0)
+        if (parse_declarator(cs, t, is_const, unsized) < 0)
             return -1;
         if (!is_punct(cs, ','))
             return expect(cs, ';', "';' after the declaration");
@@ -201,9 +248,31 @@ static int no_overload(compiler *cs, const ltoken *name, const sc_ltype *types, 
     char list[120] = "", tb[16];
     for (int i = 0; i < n; i++) {
         size_t used = strlen(list);
-        snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", type_str(types[i], tb));
+        snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "",
+                 type_str(cs, types[i], tb));
     }
     return fail_at(cs, name, "no function '%.*s' takes (%s)", name->len, name->start, list);
+}
+
+/* Records a call for the checks of the whole program (check_calls). */
+static int add_edge(compiler *cs, const ltoken *name, int callee)
+{
+    if (sc_expr_grow((void **)&cs->edges, &cs->cap_edges, cs->n_edges + 1, sizeof *cs->edges) < 0)
+        return fail_at(cs, NULL, "out of memory");
+    cs->edges[cs->n_edges++] = (call_edge){cs->cur_func, callee, name->line, name->column};
+    return 0;
+}
+
+/* OP_CALL of function `index`; before its definition, a link of its chain of calls. */
+static int emit_call(compiler *cs, const ltoken *name, int index)
+{
+    function *f = &cs->funcs[index];
+    int i = emit_at(cs, name, OP_CALL, 0, 0, 0, f->defined ? f->entry : f->call_chain, 0);
+    if (i < 0 || add_edge(cs, name, index) < 0)
+        return -1;
+    if (!f->defined)
+        f->call_chain = i;
+    return 0;
 }
 
 /* Copies the arguments into the parameters, calls, copies out/inout parameters back. */
@@ -227,10 +296,10 @@ int call_function(compiler *cs, const ltoken *name, operand *args, int n_args, o
         if (widen_to(cs, name, f->params[i], &args[i]) < 0)
             return -1;
         if ((f->qual[i] & Q_IN) && emit_at(cs, name, OP_MOV, f->param_regs[i], args[i].reg, 0, 0,
-                                           sc_ltype_size(args[i].type)) < 0)
+                                           type_size(cs, args[i].type)) < 0)
             return -1;
     }
-    if (emit_at(cs, name, OP_CALL, 0, 0, 0, f->entry, 0) < 0)
+    if (emit_call(cs, name, (int)(f - cs->funcs)) < 0)
         return -1;
     for (int i = 0; i < n_args; i++)
         if ((f->qual[i] & Q_OUT) && store(cs, &args[i], f->param_regs[i], name) < 0)
@@ -239,9 +308,9 @@ int call_function(compiler *cs, const ltoken *name, operand *args, int n_args, o
     out->type = f->ret;
     out->lv_index = -1;
     out->why = "a function's result";
-    if (f->ret.kind > SC_KIND_BOOL)
+    if (is_void(f->ret))
         return 0;
-    int n = sc_ltype_size(f->ret);
+    int n = type_size(cs, f->ret);
     out->reg = alloc_regs(cs, n); /* a copy: a second call would overwrite ret_reg */
     if (out->reg < 0)
         return -1;
@@ -263,6 +332,7 @@ static int parse_param(compiler *cs, function *f, ltoken *names)
     if (f->n_params == MAX_PARAMS)
         return fail_at(cs, &cs->tok, "too many parameters (at most %d)", MAX_PARAMS);
     sc_ltype t;
+    int unsized = 0;
     if (parse_type(cs, &t, 0) < 0)
         return -1;
     ltoken name = cs->tok;
@@ -270,6 +340,10 @@ static int parse_param(compiler *cs, function *f, ltoken *names)
         next(cs);
     else
         name.len = 0;
+    if (declarator_type(cs, &t, &unsized) < 0)
+        return -1;
+    if (unsized)
+        return fail_at(cs, &name, "a parameter cannot be an array of unknown size");
     names[f->n_params] = name;
     f->params[f->n_params] = t;
     f->qual[f->n_params] = q | (is_const ? 4 : 0);
@@ -298,7 +372,7 @@ static int parse_params(compiler *cs, function *f, ltoken *names)
     }
 }
 
-static int check_new_function(compiler *cs, const ltoken *name, const function *f)
+static int check_new_function(compiler *cs, const ltoken *name)
 {
     if (is_reserved(name->start, name->len) && !(cs->desktop_builtins && is_builtin_function(name)))
         return fail_at(cs, name,
@@ -309,31 +383,68 @@ static int check_new_function(compiler *cs, const ltoken *name, const function *
         return fail_at(cs, name, "name '%.20s...' is too long", name->start);
     if (find_variable(cs, name->start, name->len))
         return fail_at(cs, name, "'%.*s' is already a variable", name->len, name->start);
-    if (find_overload(cs, name, f->params, f->n_params))
-        return fail_at(cs, name, "'%.*s' is already defined with these parameter types", name->len,
-                       name->start);
     return 0;
 }
 
-static int parse_statement(compiler *cs, int top_level);
+static const char *qualifier_name(int q)
+{
+    static const char *const names[] = {"", "in", "out", "inout", "", "const in"};
+    return names[q];
+}
+
+/* A second declaration (a prototype, or the definition after one) must agree with the first. */
+static int check_redeclaration(compiler *cs, const ltoken *name, const function *old, sc_ltype ret,
+                               const function *f)
+{
+    char ab[16], bb[16];
+    if (!sc_lt_equal(old->ret, ret))
+        return fail_at(cs, name, "'%s' returns %s here but %s where first declared", old->name,
+                       type_str(cs, ret, ab), type_str(cs, old->ret, bb));
+    for (int i = 0; i < f->n_params; i++)
+        if (f->qual[i] != old->qual[i])
+            return fail_at(cs, name,
+                           "parameter %d of '%s' is '%s' here but '%s' where first declared", i + 1,
+                           old->name, qualifier_name(f->qual[i]), qualifier_name(old->qual[i]));
+    return 0;
+}
+
+/* The function's entry in the table, *index: the earlier declaration of the same parameter
+ * types, or a new one with its parameter and result registers. */
+static int declare_function(compiler *cs, const ltoken *name, sc_ltype ret, function *f, int *index)
+{
+    const function *old = find_overload(cs, name, f->params, f->n_params);
+    if (old) {
+        *index = (int)(old - cs->funcs);
+        return check_redeclaration(cs, name, old, ret, f);
+    }
+    if (check_new_function(cs, name) < 0)
+        return -1;
+    memcpy(f->name, name->start, (size_t)name->len);
+    f->ret = ret;
+    f->ret_reg = is_void(ret) ? 0 : alloc_regs(cs, type_size(cs, ret));
+    f->call_chain = -1;
+    for (int i = 0; i < f->n_params && f->ret_reg >= 0; i++)
+        if ((f->param_regs[i] = alloc_regs(cs, type_size(cs, f->params[i]))) < 0)
+            return -1;
+    if (f->ret_reg < 0)
+        return -1;
+    if (sc_expr_grow((void **)&cs->funcs, &cs->cap_funcs, cs->n_funcs + 1, sizeof *cs->funcs) < 0)
+        return fail_at(cs, NULL, "out of memory");
+    *index = cs->n_funcs;
+    cs->funcs[cs->n_funcs++] = *f;
+    return 0;
+}
+
 static int is_statement_keyword(const compiler *cs);
 
 /* The parameters as variables of the body's scope, then the body. */
 static int parse_body(compiler *cs, function *f, const ltoken *names)
 {
     open_scope(cs);
-    for (int i = 0; i < f->n_params; i++) {
-        int reg;
-        if (names[i].len == 0) {
-            f->param_regs[i] = alloc_regs(cs, sc_ltype_size(f->params[i]));
-            if (f->param_regs[i] < 0)
-                return -1;
-            continue;
-        }
-        if (declare_variable(cs, &names[i], f->params[i], f->qual[i] >> 2, &reg) < 0)
+    for (int i = 0; i < f->n_params; i++)
+        if (names[i].len > 0 &&
+            bind_variable(cs, &names[i], f->params[i], f->qual[i] >> 2, f->param_regs[i]) < 0)
             return -1;
-        f->param_regs[i] = reg;
-    }
     int status = expect(cs, '{', "'{' to start the function's body");
     while (status == 0 && !is_punct(cs, '}')) {
         if (cs->tok.kind == T_END)
@@ -346,34 +457,35 @@ static int parse_body(compiler *cs, function *f, const ltoken *names)
     return status;
 }
 
+/* A prototype (`TYPE NAME(params);`) or a definition, which may follow prototypes. */
 static int parse_function(compiler *cs, sc_ltype ret, const ltoken *name)
 {
     function f;
     ltoken names[MAX_PARAMS];
+    int index = -1;
     memset(&f, 0, sizeof f);
     if (cs->scope != 0)
         return fail_at(cs, name, "a function must be defined at the top level");
-    if (parse_params(cs, &f, names) < 0 || check_new_function(cs, name, &f) < 0)
+    if (parse_params(cs, &f, names) < 0 || declare_function(cs, name, ret, &f, &index) < 0)
         return -1;
-    if (is_punct(cs, ';'))
-        return fail_at(cs, name,
-                       "function prototypes are not supported: define '%.*s' before "
-                       "its first call",
-                       name->len, name->start);
-    memcpy(f.name, name->start, (size_t)name->len);
-    f.ret = ret;
-    f.ret_reg = ret.kind > SC_KIND_BOOL ? 0 : alloc_regs(cs, sc_ltype_size(ret));
+    if (is_punct(cs, ';')) {
+        next(cs);
+        return 0;
+    }
+    if (cs->funcs[index].defined)
+        return fail_at(cs, name, "'%.*s' is already defined with these parameter types", name->len,
+                       name->start);
     int skip = emit_at(cs, name, OP_JMP, 0, 0, 0, -1, 0);
-    if (f.ret_reg < 0 || skip < 0 ||
-        sc_expr_grow((void **)&cs->funcs, &cs->cap_funcs, cs->n_funcs + 1, sizeof *cs->funcs) < 0)
-        return f.ret_reg < 0 || skip < 0 ? -1 : fail_at(cs, NULL, "out of memory");
-    f.entry = here(cs);
-    cs->cur_func = cs->n_funcs;
-    cs->funcs[cs->n_funcs++] = f;
-    /* the parameter registers are known only in the body: the table's copy is updated there */
-    int status = parse_body(cs, &cs->funcs[cs->cur_func], names);
+    if (skip < 0)
+        return -1;
+    function *def = &cs->funcs[index];
+    def->entry = here(cs);
+    def->defined = 1;
+    patch_chain(cs, def->call_chain, def->entry);
+    cs->cur_func = index;
+    int status = parse_body(cs, def, names);
     if (status == 0)
-        status = emit_at(cs, name, ret.kind > SC_KIND_BOOL ? OP_RET : OP_NORETURN, 0, 0, 0, 0, 0);
+        status = emit_at(cs, name, is_void(ret) ? OP_RET : OP_NORETURN, 0, 0, 0, 0, 0);
     cs->cur_func = -1;
     patch_chain(cs, skip, here(cs));
     return status < 0 ? -1 : 0;
@@ -450,7 +562,7 @@ static int parse_while(compiler *cs)
 {
     ltoken at = cs->tok;
     int cond, top = here(cs);
-    loop_ctx loop = {-1, -1};
+    loop_ctx loop = {-1, -1, 0, NULL};
     next(cs);
     if (parse_paren_condition(cs, &cond) < 0)
         return -1;
@@ -468,7 +580,7 @@ static int parse_do(compiler *cs)
 {
     ltoken at = cs->tok;
     int cond, top = here(cs);
-    loop_ctx loop = {-1, -1};
+    loop_ctx loop = {-1, -1, 0, NULL};
     next(cs);
     if (parse_loop_body(cs, &at, &loop) < 0)
         return -1;
@@ -514,7 +626,7 @@ static int parse_for_clauses(compiler *cs, const ltoken *at, int *exit, int *ste
 static int parse_for(compiler *cs)
 {
     ltoken at = cs->tok;
-    loop_ctx loop = {-1, -1};
+    loop_ctx loop = {-1, -1, 0, NULL};
     int exit = -1, step = -1;
     next(cs);
     if (expect(cs, '(', "'(' after 'for'") < 0)
@@ -538,10 +650,14 @@ static int parse_jump(compiler *cs)
 {
     ltoken at = cs->tok;
     int is_break = is_word(cs, "break");
-    if (!cs->loop)
-        return fail_at(cs, &at, "'%s' outside a loop", is_break ? "break" : "continue");
+    loop_ctx *loop = cs->loop;
+    while (loop && !is_break && loop->is_switch)
+        loop = loop->enclosing;
+    if (!loop)
+        return fail_at(cs, &at, "%s",
+                       is_break ? "'break' outside a loop or switch" : "'continue' outside a loop");
     next(cs);
-    int *chain = is_break ? &cs->loop->break_chain : &cs->loop->continue_chain;
+    int *chain = is_break ? &loop->break_chain : &loop->continue_chain;
     int i = emit_at(cs, &at, OP_JMP, 0, 0, 0, *chain, 0);
     if (i < 0)
         return -1;
@@ -558,33 +674,21 @@ static int parse_return(compiler *cs)
     const function *f = &cs->funcs[cs->cur_func];
     next(cs);
     if (is_punct(cs, ';')) {
-        if (f->ret.kind <= SC_KIND_BOOL)
-            return fail_at(cs, &at, "'%s' must return a %s", f->name, type_str(f->ret, ab));
+        if (!is_void(f->ret))
+            return fail_at(cs, &at, "'%s' must return a %s", f->name, type_str(cs, f->ret, ab));
     } else {
         operand v;
         if (parse_expression(cs, &v) < 0 || widen_to(cs, &at, f->ret, &v) < 0)
             return -1;
         if (!sc_lt_equal(v.type, f->ret))
-            return fail_at(cs, &at, "'%s' returns %s, not %s", f->name, type_str(f->ret, ab),
-                           type_str(v.type, bb));
-        if (emit_at(cs, &at, OP_MOV, f->ret_reg, v.reg, 0, 0, sc_ltype_size(v.type)) < 0)
+            return fail_at(cs, &at, "'%s' returns %s, not %s", f->name, type_str(cs, f->ret, ab),
+                           type_str(cs, v.type, bb));
+        if (emit_at(cs, &at, OP_MOV, f->ret_reg, v.reg, 0, 0, type_size(cs, v.type)) < 0)
             return -1;
     }
     if (emit_at(cs, &at, OP_RET, 0, 0, 0, 0, 0) < 0)
         return -1;
     return expect(cs, ';', "';' after 'return'");
-}
-
-static int add_emit(compiler *cs, const char *start, const operand *v)
-{
-    sc_program *pr = cs->prog;
-    const char *end = cs->prev_end;
-    while (end > start && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\n'))
-        end--;
-    if (sc_expr_grow((void **)&pr->emits, &pr->cap_emits, pr->n_emits + 1, sizeof *pr->emits) < 0)
-        return fail_at(cs, NULL, "out of memory");
-    pr->emits[pr->n_emits] = (emit_site){(int)(start - cs->src), (int)(end - start), v->type};
-    return pr->n_emits++;
 }
 
 /* An expression statement; at the top level its value is printed, unless it is void or an
@@ -595,9 +699,11 @@ static int parse_expression_statement(compiler *cs, int top_level)
     operand v;
     if (parse_expression(cs, &v) < 0)
         return -1;
-    if (top_level && !v.is_assignment && v.type.kind <= SC_KIND_BOOL) {
-        int site = add_emit(cs, first.start, &v);
-        if (site < 0 || emit_at(cs, &first, OP_EMIT, 0, v.reg, 0, site, 0) < 0)
+    if (top_level && !v.is_assignment && !is_void(v.type)) {
+        const char *end = cs->prev_end;
+        while (end > first.start && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\n'))
+            end--;
+        if (emit_value(cs, &first, end, &v) < 0)
             return -1;
     }
     if (top_level && cs->tok.kind == T_END)
@@ -605,34 +711,58 @@ static int parse_expression_statement(compiler *cs, int top_level)
     return expect(cs, ';', "';' after the expression");
 }
 
-/* A declaration or a function (top level): [const] [precision] TYPE NAME ... */
+/* A declaration or a function (top level): [const] [precision] TYPE NAME ..., or a structure's
+ * definition, alone or with declarators. */
 static int parse_declaration(compiler *cs, int top_level)
 {
-    int is_const = is_word(cs, "const");
+    int is_const = is_word(cs, "const"), unsized = 0;
     if (is_const)
         next(cs);
+    int defines = is_word(cs, "struct");
     sc_ltype t;
-    if (parse_type(cs, &t, 1) < 0)
+    if (parse_type_ex(cs, &t, 1, &unsized) < 0)
         return -1;
+    if (defines && is_punct(cs, ';')) {
+        next(cs);
+        return 0;
+    }
     ltoken name = cs->tok;
     if (name.kind == T_IDENT && peek(cs).kind == T_PUNCT && peek(cs).punct == '(') {
         if (!top_level || is_const)
             return fail_at(cs, &name, "a function must be defined at the top level");
+        if (unsized)
+            return fail_at(cs, &name, "a function cannot return an array of unknown size");
         next(cs);
         return parse_function(cs, t, &name);
     }
-    if (t.kind > SC_KIND_BOOL)
+    if (is_void(t))
         return fail_at(cs, &name, "a variable cannot be void");
-    return parse_declaration_rest(cs, t, is_const);
+    return parse_declaration_rest(cs, t, is_const, unsized);
 }
 
-/* 1 if the statement is a declaration: const, a precision, or TYPE followed by a name. */
+/* 1 if the tokens after the current one are '[' ... ']' NAME (an array type declaring). */
+static int array_type_declares(const compiler *cs)
+{
+    lexer lx = cs->lx;
+    ltoken t;
+    int depth = 0;
+    do {
+        lex_next(&lx, &t);
+        depth += t.kind == T_PUNCT ? (t.punct == '[') - (t.punct == ']') : 0;
+    } while (depth > 0 && t.kind != T_END && t.kind != T_BAD);
+    lex_next(&lx, &t);
+    return t.kind == T_IDENT;
+}
+
+/* 1 if the statement is a declaration: const, a precision, a structure, or TYPE followed by a
+ * name (TYPE may be an array type). */
 static int at_declaration(const compiler *cs)
 {
-    if (is_word(cs, "const") || is_precision_word(&cs->tok))
+    if (is_word(cs, "const") || is_precision_word(&cs->tok) || is_word(cs, "struct"))
         return 1;
     ltoken after = peek(cs);
-    return at_type(cs) && after.kind == T_IDENT;
+    return at_type(cs) && (after.kind == T_IDENT || (after.kind == T_PUNCT && after.punct == '[' &&
+                                                     array_type_declares(cs)));
 }
 
 static int skip_precision_statement(compiler *cs)
@@ -663,22 +793,26 @@ static int parse_keyword_statement(compiler *cs)
         return parse_return(cs);
     if (is_word(cs, "precision"))
         return skip_precision_statement(cs);
+    if (is_word(cs, "switch"))
+        return parse_switch(cs);
+    if (is_word(cs, "case") || is_word(cs, "default"))
+        return misplaced_label(cs);
     return fail_at(cs, &cs->tok, "'%.*s' is not supported", cs->tok.len, cs->tok.start);
 }
 
 static int is_statement_keyword(const compiler *cs)
 {
-    static const char *const words[] = {"if",        "for",     "while",     "do",        "break",
-                                        "continue",  "return",  "precision", "discard",   "switch",
-                                        "struct",    "uniform", "in",        "out",       "inout",
-                                        "attribute", "varying", "layout",    "invariant", NULL};
+    static const char *const words[] = {
+        "if",        "for",     "while",     "do",      "break",   "continue",  "return",
+        "precision", "discard", "switch",    "case",    "default", "uniform",   "in",
+        "out",       "inout",   "attribute", "varying", "layout",  "invariant", NULL};
     for (int i = 0; words[i]; i++)
         if (is_word(cs, words[i]))
             return 1;
     return 0;
 }
 
-static int parse_statement(compiler *cs, int top_level)
+int parse_statement(compiler *cs, int top_level)
 {
     if (cs->depth++ > MAX_DEPTH)
         return fail_at(cs, &cs->tok, "nested too deeply (more than %d levels)", MAX_DEPTH);
@@ -714,6 +848,92 @@ static int declare_inputs(compiler *cs, const sc_lang_input *inputs, int n_input
     return 0;
 }
 
+static int by_callee(const void *a, const void *b)
+{
+    const call_edge *x = a, *y = b;
+    return (x->callee > y->callee) - (x->callee < y->callee);
+}
+
+/* Removes, leaves first, the functions that call no remaining function (each edge's caller
+ * loses one pending call when its callee goes); what remains calls in a cycle. 1 if
+ * function i is in or leads to a cycle. The edges are sorted by callee. */
+static int *find_cycles(compiler *cs)
+{
+    int n = cs->n_funcs, *pending = calloc((size_t)n + 1, sizeof *pending);
+    int *queue = malloc(((size_t)n + 1) * sizeof *queue), head = 0, tail = 0;
+    int *first = malloc(((size_t)n + 2) * sizeof *first);
+    if (!pending || !queue || !first) {
+        free(pending), free(queue), free(first);
+        return NULL;
+    }
+    for (int i = 0, e = 0; i <= n; i++) { /* first[i]: the first edge into function i */
+        while (e < cs->n_edges && cs->edges[e].callee < i)
+            e++;
+        first[i] = e;
+    }
+    first[n + 1] = cs->n_edges;
+    for (int e = 0; e < cs->n_edges; e++)
+        if (cs->edges[e].caller >= 0)
+            pending[cs->edges[e].caller]++;
+    for (int i = 0; i < n; i++)
+        if (pending[i] == 0)
+            queue[tail++] = i;
+    while (head < tail) {
+        int f = queue[head++];
+        for (int e = first[f]; e < first[f + 1]; e++) {
+            int caller = cs->edges[e].caller;
+            if (caller >= 0 && --pending[caller] == 0)
+                queue[tail++] = caller;
+        }
+    }
+    free(queue);
+    free(first);
+    return pending;
+}
+
+/* The first call by f of a function in or leading to a cycle. */
+static int call_in_cycle(const compiler *cs, const int *pending, int f)
+{
+    int e = 0;
+    while (cs->edges[e].caller != f || !pending[cs->edges[e].callee])
+        e++;
+    return e;
+}
+
+/* Every called function is defined; no function calls itself through others (GLSL ES forbids
+ * recursion). Errors name the call. */
+static int check_calls(compiler *cs)
+{
+    if (cs->n_edges == 0)
+        return 0;
+    qsort(cs->edges, (size_t)cs->n_edges, sizeof *cs->edges, by_callee);
+    for (int e = 0; e < cs->n_edges; e++) {
+        const call_edge *c = &cs->edges[e];
+        if (!cs->funcs[c->callee].defined) {
+            ltoken at = {.line = c->line, .column = c->column};
+            return fail_at(cs, &at, "'%s' is called but never defined (only declared)",
+                           cs->funcs[c->callee].name);
+        }
+    }
+    int *pending = find_cycles(cs), f = 0;
+    if (!pending)
+        return fail_at(cs, NULL, "out of memory");
+    while (f < cs->n_funcs && !pending[f])
+        f++;
+    if (f == cs->n_funcs) {
+        free(pending);
+        return 0;
+    }
+    /* every remaining function calls a remaining one: n steps from any end inside a cycle */
+    for (int step = 0; step < cs->n_funcs; step++)
+        f = cs->edges[call_in_cycle(cs, pending, f)].callee;
+    const call_edge *c = &cs->edges[call_in_cycle(cs, pending, f)];
+    free(pending);
+    ltoken at = {.line = c->line, .column = c->column};
+    return fail_at(cs, &at, "'%s' calls '%s', which leads back to '%s': GLSL ES forbids recursion",
+                   cs->funcs[c->caller].name, cs->funcs[c->callee].name, cs->funcs[c->caller].name);
+}
+
 static int compile_into(compiler *cs, const sc_lang_input *inputs, int n_inputs)
 {
     if (declare_inputs(cs, inputs, n_inputs) < 0)
@@ -723,6 +943,8 @@ static int compile_into(compiler *cs, const sc_lang_input *inputs, int n_inputs)
     while (cs->tok.kind != T_END)
         if (parse_statement(cs, 1) < 0)
             return -1;
+    if (check_calls(cs) < 0 || attach_labels(cs) < 0)
+        return -1;
     cs->prog->max_call_depth = cs->n_funcs + 1;
     return emit_at(cs, &cs->tok, OP_HALT, 0, 0, 0, 0, 0) < 0 ? -1 : 0;
 }
@@ -748,11 +970,16 @@ sc_program *sc_program_compile(const char *src, const sc_lang_input *inputs, int
     memcpy(copy, src, len + 1);
     cs.prog->src = copy;
     cs.src = copy;
+    cs.src_len = (int)len;
     long bound = options ? options->max_iterations : 0;
     cs.prog->max_iterations = bound > 0 ? bound : SC_LANG_DEFAULT_MAX_ITERATIONS;
     int status = compile_into(&cs, inputs, n_inputs);
     free(cs.vars);
     free(cs.funcs);
+    free(cs.types);
+    free(cs.members);
+    free(cs.labels);
+    free(cs.edges);
     if (status < 0) {
         sc_program_free(cs.prog);
         return NULL;

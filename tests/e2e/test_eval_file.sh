@@ -71,6 +71,11 @@ expect_stdin "file: hex of ints" 'ivec2(-1, 255)' 0 'ivec2(0xffffffff, 0x000000f
 expect_stdin "file: jsonl" 'ivec2(1, 2);
 true' 0 '{"expression": "ivec2(1, 2)", "line": 1, "precision": "highp", "type": "ivec2", "value": [1, 2]}
 {"expression": "true", "line": 2, "precision": "highp", "type": "bool", "value": true}' '' -- eval -f jsonl --file -
+expect_stdin "file: a structure prints member by member" 'struct S { float w[2]; int n; };
+S s = S(float[2](0.5, 1.5), 3);
+s' 0 '{"expression": "s.w[0]", "line": 3, "precision": "highp", "type": "float", "value": 0.5}
+{"expression": "s.w[1]", "line": 3, "precision": "highp", "type": "float", "value": 1.5}
+{"expression": "s.n", "line": 3, "precision": "highp", "type": "int", "value": 3}' '' -- eval -f jsonl --file -
 expect_stdin "file: csv" 'vec2(1.0, 2.0); vec2(0.5)' 0 'expression,x,y
 "vec2(1.0, 2.0)",1,2
 vec2(0.5),0.5,0.5' '' -- eval -f csv --file -
@@ -96,6 +101,8 @@ expect_stdin "file: --max-iterations" 'int i = 0; while (i < 100) i++; i' 1 '' \
 expect_stdin "file: loop within the bound" 'int i = 0; while (i < 100) i++; i' 0 '100' '' -- eval --max-iterations 100 --file -
 expect_stdin "file: index out of range" 'vec3 v; int i = 3; v[i]' 1 '' \
     'error: <stdin>:1:21: index 3 is out of range 0..2' -- eval --file -
+expect_stdin "file: array index out of range" 'float a[2] = float[2](1.0, 2.0);
+int i = 2; a[i - 1]; a[i]' 1 '2' 'error: <stdin>:2:23: index 2 is out of range 0..1' -- eval --file -
 expect_stdin "file: unknown function" 'lessThn(1, 2)' 2 '' \
     "error: <stdin>:1:1: unknown function 'lessThn' (did you mean 'lessThan'?)" -- eval --file -
 expect_stdin "file: malformed" 'int x = ;' 2 '' "error: <stdin>:1:9: expected an expression, found ';'" -- eval --file -

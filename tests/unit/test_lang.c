@@ -480,7 +480,7 @@ static void type_errors_name_line_and_column(void **state)
     assert_compile_error("vec3(1.0)[3];", 1, 10, "index 3 is out of range 0..2");
     assert_compile_error("\n\n  lessThn(1, 2);", 3, 3, "did you mean 'lessThan'");
     assert_compile_error("float f(float x) { return f(x); }", 1, 27, "forbids recursion");
-    assert_compile_error("float f(float x);", 1, 7, "prototypes are not supported");
+    assert_compile_error("float f(float x);\nf(1.0);", 2, 1, "never defined");
     assert_compile_error("float f(float x) { return 1; }", 1, 20, "returns float, not int");
     assert_compile_error("void f(out float x) { x = 1.0; } f(2.0);", 1, 34, "out parameter");
     assert_compile_error("break;", 1, 1, "outside a loop");
@@ -491,7 +491,6 @@ static void type_errors_name_line_and_column(void **state)
     assert_compile_error("/* open", 1, 1, "unterminated comment");
     assert_compile_error("1;\n  /* open\n\n", 2, 3, "unterminated comment");
     assert_compile_error("#define X 1\nX;", 1, 1, "preprocessor");
-    assert_compile_error("float a[3];", 1, 8, "arrays are not supported");
     assert_compile_error("void f() {} f() + 1;", 1, 17, "void");
 }
 
@@ -504,6 +503,241 @@ static void runtime_errors_name_the_line(void **state)
     assert_runtime_error("vec3 v;\nint i = -1;\nv[i];", 0, 3, "index -1 is out of range 0..2");
     assert_runtime_error("float g(float x) { if (x > 0.0) return 1.0; }\ng(-1.0);", 0, 1,
                          "without 'return'");
+}
+
+/* ---- arrays, structures, switch, prototypes, modf ---- */
+
+/* The value of the last expression of src, a scalar. */
+static double last_scalar(const char *src)
+{
+    results r = run(src);
+    assert_true(r.n >= 1);
+    assert_int_equal(sc_ltype_size(r.v[r.n - 1].type), 1);
+    return r.v[r.n - 1].v[0];
+}
+
+static void arrays_index_assign_and_compare(void **state)
+{
+    (void)state;
+    assert_true(scalar("float a[3] = float[3](1.0, 2.0, 4.0); a[0] + a[1] * a[2];") == 9.0);
+    assert_true(scalar("float[3] b = float[](1.0, 2.0, 3.0); b.length();") == 3.0);
+    assert_true(scalar("float c[] = float[](1.0, 2.0, 3.0, 4.0); c.length();") == 4.0);
+    assert_true(scalar("float z[3]; z[0] + z[1] + z[2];") == 0.0);
+    /* sum of squares 1..5 through computed indices: n(n+1)(2n+1)/6 */
+    assert_true(scalar("int s = 0; int a[5] = int[5](1, 2, 3, 4, 5);\n"
+                       "for (int i = 0; i < a.length(); i++) s += a[i] * a[i]; s;") ==
+                5.0 * 6.0 * 11.0 / 6.0);
+    assert_true(scalar("int a[4]; for (int i = 0; i < 4; i++) a[i] = i * i; a[3] - a[1];") ==
+                9.0 - 1.0);
+    /* assignment copies the whole array */
+    assert_true(scalar("float a[2] = float[2](1.0, 2.0); float b[2]; b = a; a[0] = 5.0; b[0];") ==
+                1.0);
+    results r = run("float a[2] = float[2](1.0, 2.0); float b[2] = float[2](1.0, 2.0);\n"
+                    "a == b; a != b; b[1] = -2.0; a == b; (true ? a : b)[1]; (false ? a : b)[1];");
+    assert_int_equal(r.n, 5);
+    assert_true(r.v[0].v[0] == 1.0 && r.v[1].v[0] == 0.0 && r.v[2].v[0] == 0.0);
+    assert_true(r.v[3].v[0] == 2.0 && r.v[4].v[0] == -2.0);
+    /* vectors in arrays: a component stored through a computed index */
+    r = run("vec3 v[2]; int i = 1; v[i].y = 2.0; v[i][2] = 3.0; v[1];");
+    assert_int_equal(r.n, 1);
+    assert_true(r.v[0].v[0] == 0.0 && r.v[0].v[1] == 2.0 && r.v[0].v[2] == 3.0);
+    /* sizes are constant integer expressions, const arrays constant */
+    assert_true(scalar("const int N = 2; float a[N * 2 + 1]; a.length();") == 5.0);
+    assert_true(scalar("const int K[3] = int[3](1, 2, 3); K[2] - K[0];") == 2.0);
+    assert_true(scalar("mat2 m[2]; m[1][1][0] = 4.0; m[1][1].x;") == 4.0);
+}
+
+static void arrays_pass_to_and_return_from_functions(void **state)
+{
+    (void)state;
+    assert_true(scalar("float sum(float a[3]) { return a[0] + a[1] + a[2]; }\n"
+                       "sum(float[3](1.0, 2.0, 3.5));") == 6.5);
+    assert_true(scalar("void fill(out int a[3]) { for (int i = 0; i < 3; i++) a[i] = 10 * i; }\n"
+                       "int b[3]; fill(b); b[2];") == 20.0);
+    assert_true(scalar("void twice(inout float[2] a) { a[0] *= 2.0; a[1] *= 2.0; }\n"
+                       "float c[2] = float[2](1.5, 3.0); twice(c); c[1];") == 6.0);
+    assert_true(scalar("float[2] pair(float x) { return float[2](x, -x); } pair(2.0)[1];") == -2.0);
+    /* an in parameter is a copy */
+    assert_true(last_scalar("float first(float a[2]) { a[0] = 9.0; return a[0]; }\n"
+                            "float c[2] = float[2](1.0, 2.0); first(c); c[0];") == 1.0);
+}
+
+static void structures_construct_select_assign_and_compare(void **state)
+{
+    (void)state;
+    assert_true(scalar("struct P { vec2 pos; float w; };\n"
+                       "P p = P(vec2(1.0, 2.0), 0.5); p.pos.y * p.w;") == 1.0);
+    assert_true(scalar("struct A { float x; }; struct B { A a; A arr[2]; };\n"
+                       "B b = B(A(1.0), A[2](A(2.0), A(3.0))); b.arr[1].x - b.a.x;") == 2.0);
+    results r = run("struct P { vec2 pos; float w; }; P p = P(vec2(1.0), 0.5);\n"
+                    "P q = p; p == q; q.w = 1.0; p == q; p != q; p.w;");
+    assert_int_equal(r.n, 4);
+    assert_true(r.v[0].v[0] == 1.0 && r.v[1].v[0] == 0.0 && r.v[2].v[0] == 1.0);
+    assert_true(r.v[3].v[0] == 0.5);
+    /* (1 + 2i)(3 - i) = 5 + 5i, with structures as parameters and results */
+    r = run("struct C { float re, im; };\n"
+            "C mul(C a, C b) { return C(a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re); }\n"
+            "C z = mul(C(1.0, 2.0), C(3.0, -1.0)); z.re; z.im;");
+    assert_int_equal(r.n, 2);
+    assert_true(r.v[0].v[0] == 5.0 && r.v[1].v[0] == 5.0);
+    /* members of array elements at computed indices, read and written */
+    assert_true(
+        scalar("struct T { int a; int b; }; T ts[3];\n"
+               "for (int i = 0; i < 3; i++) ts[i].b = i + 1; ts[2].b * ts[1].b + ts[0].a;") == 6.0);
+    assert_true(scalar("struct P { vec2 pos; float w; }; P ps[2]; int i = 1;\n"
+                       "ps[i] = P(vec2(3.0), 4.0); ps[1].w + ps[0].w;") == 4.0);
+    assert_true(scalar("struct P { vec2 pos; float w; };\n"
+                       "void set(out P p) { p.w = 3.0; p.pos = vec2(1.0, 2.0); }\n"
+                       "P p; set(p); p.pos.y + p.w;") == 5.0);
+    /* a structure declared in a block ends with it; one declared with its definition */
+    assert_true(last_scalar("{ struct L { int k; }; L l = L(3); l.k; }\n"
+                            "struct L { float k; } m = L(1.5); m.k;") == 1.5);
+}
+
+typedef struct {
+    char text[8][32];
+    int n;
+} texts;
+
+static int collect_text(void *user, const char *text, int len, int line, const sc_lvalue *v)
+{
+    texts *t = user;
+    (void)line, (void)v;
+    if (t->n < 8)
+        snprintf(t->text[t->n++], sizeof t->text[0], "%.*s", len, text);
+    return 0;
+}
+
+/* A top-level array or structure prints each element or member, named by its path. */
+static void aggregates_print_element_by_element(void **state)
+{
+    (void)state;
+    sc_lang_error err;
+    sc_program *prog = sc_program_compile(
+        "struct S { float x; ivec2 v[2]; };\nS s; s; float[2](1.0, 2.0);", NULL, 0, NULL, &err);
+    assert_non_null(prog);
+    texts t = {.n = 0};
+    assert_int_equal(sc_program_run(prog, SC_HIGHP, NULL, collect_text, NULL, &t, &err), 0);
+    sc_program_free(prog);
+    static const char *const want[] = {"s.x", "s.v[0]", "s.v[1]", "float[2](1.0, 2.0)[0]",
+                                       "float[2](1.0, 2.0)[1]"};
+    assert_int_equal(t.n, 5);
+    for (int i = 0; i < 5; i++)
+        assert_string_equal(t.text[i], want[i]);
+}
+
+static void switch_selects_falls_through_and_breaks(void **state)
+{
+    (void)state;
+    static const int in[] = {0, 1, 2, 7, -3};
+    static const int want[] = {10, 1 + 5, 2 + 5, -1, -1};
+    for (int i = 0; i < 5; i++) {
+        char src[200];
+        snprintf(src, sizeof src,
+                 "int f(int x) { switch (x) { case 0: return 10; case 1: case 2: x += 5; break;\n"
+                 "default: x = -1; } return x; } f(%d);",
+                 in[i]);
+        assert_true(scalar(src) == want[i]);
+    }
+    /* continue belongs to the loop; break to the switch: 2 × (10 + 1 + 2 × 100) */
+    assert_true(
+        scalar("int s = 0; for (int i = 0; i < 6; i++) { switch (i % 3) {\n"
+               "case 0: continue; case 1: s += 10; break; default: s += 1; } s += 100; } s;") ==
+        422.0);
+    assert_true(scalar("uint u = 3u; int r = 0; switch (u) { case 1u + 2u: r = 1; } r;") == 1.0);
+    assert_true(scalar("int r = 0; switch (5) { case 1: r = 1; } r;") == 0.0); /* no label */
+    assert_true(scalar("int r = 0; switch (1) { case 1: switch (2) { case 2: r += 1; break; }\n"
+                       "r += 10; break; case 3: r += 100; } r;") == 11.0);
+    assert_true(scalar("const int K = -4; int r = 0; switch (-4) { case K: r = 2; } r;") == 2.0);
+    /* a variable declared in one case is zero in a later one its declaration was skipped for */
+    results r = run("int g(int x) { switch (x) { case 0: int y = 5; case 1: y += 1; return y; }\n"
+                    "return -1; } g(0); g(1);");
+    assert_true(r.v[0].v[0] == 6.0 && r.v[1].v[0] == 1.0);
+}
+
+static void prototypes_declare_before_definitions(void **state)
+{
+    (void)state;
+    assert_true(scalar("float g(float x);\nfloat h(float x) { return g(x) * 2.0; }\n"
+                       "float g(float x) { return x + 1.0; }\nfloat g(float);\nh(1.5);") == 5.0);
+    assert_true(scalar("void set(out int r);\nint r; set(r); r;\nvoid set(out int x) { x = 7; }") ==
+                7.0);
+}
+
+/* modf(x, out i): i = trunc(x), the result x - i (both exact). */
+static void modf_splits_whole_and_fraction(void **state)
+{
+    (void)state;
+    static const double xs[] = {2.75, -1.5, 0.25, -0.0, 8388607.5, 3.0};
+    for (int k = 0; k < 6; k++) {
+        char src[100];
+        snprintf(src, sizeof src, "float i; float f = modf(%.2f, i); f; i;", xs[k]);
+        results r = run(src);
+        assert_int_equal(r.n, 2);
+        assert_true(r.v[1].v[0] == trunc(xs[k]));
+        assert_true(r.v[0].v[0] == xs[k] - trunc(xs[k]));
+    }
+    results r = run("vec3 i; modf(vec3(1.25, -2.5, 7.0), i); i;");
+    assert_true(r.v[0].v[0] == 0.25 && r.v[0].v[1] == -0.5 && r.v[0].v[2] == 0.0);
+    assert_true(r.v[1].v[0] == 1.0 && r.v[1].v[1] == -2.0 && r.v[1].v[2] == 7.0);
+    assert_true(scalar_in(SC_MEDIUMP, "float i; modf(1000.5, i);") == 0.5);
+}
+
+static void aggregate_errors_name_line_and_column(void **state)
+{
+    (void)state;
+    assert_compile_error("float a[2];\na + a;", 2, 3, "operator '+' cannot apply to float[2]");
+    assert_compile_error("float a[2]; a[2];", 1, 14, "index 2 is out of range 0..1");
+    assert_compile_error("float a[2]; int b[2]; a == b;", 1, 25, "float[2] and int[2]");
+    assert_compile_error("float a[2] = float[3](1.0, 2.0, 3.0);", 1, 12,
+                         "cannot initialize float[2] 'a' with float[3]");
+    assert_compile_error("float[2](1.0);", 1, 1, "float[2]: expects 2 arguments, got 1");
+    assert_compile_error("float a[0];", 1, 9, "from 1 to");
+    assert_compile_error("int n = 2; float a[n];", 1, 20, "constant integer expression");
+    assert_compile_error("float a[2][2];", 1, 11, "arrays of arrays");
+    assert_compile_error("float a[2]; vec2(a);", 1, 13, "argument 1 is float[2]");
+    assert_compile_error("float a[2]; sin(a);", 1, 13, "no arrays or structures");
+    assert_compile_error("float a[2]; a.x;", 1, 14, "cannot swizzle a float[2]");
+    assert_compile_error("float a[];", 1, 7, "needs an initializer");
+    assert_compile_error("struct S { float x; };\nS s; s.y;", 2, 7, "no member 'y'");
+    assert_compile_error("struct S { float x; }; S(1);", 1, 24, "argument 1 is int, not float");
+    assert_compile_error("struct S { float x; }; S s; s++;", 1, 30, "needs a number, not S");
+    assert_compile_error("struct S { float x; }; S s; -s;", 1, 29, "cannot apply to S");
+    assert_compile_error("struct S { struct T { float x; } t; };", 1, 12, "inside another");
+    assert_compile_error("struct S { float x; float x; };", 1, 27, "already has a member 'x'");
+    assert_compile_error("struct S { };", 1, 12, "no member");
+    assert_compile_error("struct S { float x; }; S;", 1, 24, "is a structure, not a variable");
+    assert_compile_error("{ struct L { int k; }; } L l;", 1, 26, "unknown variable 'L'");
+    assert_compile_error("struct S { S s; };", 1, 12, "expected a type");
+}
+
+static void switch_and_prototype_errors(void **state)
+{
+    (void)state;
+    assert_compile_error("switch (1.0) { case 1: ; }", 1, 9, "int or uint, not float");
+    assert_compile_error("switch (1) { case 1: ; case 1: ; }", 1, 24, "a second 'case 1'");
+    assert_compile_error("switch (1) { default: ; default: ; }", 1, 25, "a second 'default'");
+    assert_compile_error("int x; switch (x) { x = 1; case 1: ; }", 1, 21, "before the first");
+    assert_compile_error("case 1: ;", 1, 1, "outside a switch");
+    assert_compile_error("switch (1) { case 1: { case 2: ; } }", 1, 24, "directly in the body");
+    assert_compile_error("int y; switch (1) { case y: ; }", 1, 21, "constant int expression");
+    assert_compile_error("switch (1u) { case 1: ; }", 1, 15, "constant uint expression");
+    assert_compile_error("switch (1) { case 1: ; default: }", 1, 24, "needs a statement");
+    assert_compile_error("switch (1) { case 1: continue; }", 1, 22, "'continue' outside a loop");
+    assert_compile_error("float f(float x);\nint f(float x) { return 1; }", 2, 5,
+                         "returns int here but float");
+    assert_compile_error("void f(in float x);\nvoid f(inout float x) {}", 2, 6,
+                         "parameter 1 of 'f' is 'inout' here but 'in'");
+    assert_compile_error("float f(float x) { return x; }\nfloat f(float y) { return y; }", 2, 7,
+                         "already defined");
+    assert_compile_error("float a(float x);\nfloat b(float x) { return a(x); }\n"
+                         "float a(float x) { return b(x); }",
+                         3, 27, "forbids recursion");
+    assert_compile_error("float a(float x); float c(float x);\nfloat b(float x) { return c(x); }\n"
+                         "float c(float x) { return a(x); }\nfloat a(float x) { return b(x); }",
+                         4, 27, "forbids recursion");
+    assert_compile_error("float i; modf(1.5, 2.0);", 1, 10, "out parameter");
+    assert_compile_error("int i; modf(1.5, i);", 1, 8, "modf takes");
 }
 
 /* Deep nesting is an error, never a C stack overflow, however it nests. */
@@ -556,6 +790,15 @@ int main(void)
         cmocka_unit_test(type_errors_name_line_and_column),
         cmocka_unit_test(runtime_errors_name_the_line),
         cmocka_unit_test(deep_nesting_is_an_error),
+        cmocka_unit_test(arrays_index_assign_and_compare),
+        cmocka_unit_test(arrays_pass_to_and_return_from_functions),
+        cmocka_unit_test(structures_construct_select_assign_and_compare),
+        cmocka_unit_test(aggregates_print_element_by_element),
+        cmocka_unit_test(switch_selects_falls_through_and_breaks),
+        cmocka_unit_test(prototypes_declare_before_definitions),
+        cmocka_unit_test(modf_splits_whole_and_fraction),
+        cmocka_unit_test(aggregate_errors_name_line_and_column),
+        cmocka_unit_test(switch_and_prototype_errors),
     };
     return cmocka_run_group_tests_name("lang", tests, NULL, NULL);
 }
