@@ -59,7 +59,7 @@ two_shaders 5 a second 'shader' section
 no_brdf 2 the shader must define vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) (unknown function 'BRDF')
 brdf_type 2 the shader must define vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) (its BRDF returns another type)
 glsl 5:22 expected an expression
-array 3:60 arrays are not supported
+array 3:63 arrays of arrays are not GLSL ES 3.00
 recursion 4:37 'f' calls itself
 TABLE
 
