@@ -1,0 +1,714 @@
+/* Block execution of compiled programs (sc_program_run_block, shadecalc/lang.h).
+ *
+ * The register file is structure of arrays: register k of lane i is r[k·cap + i], so every
+ * register is a column of `cap` lanes (elements) and an instruction's handler loops over the
+ * lanes, its dispatch paid once per block. Every lane computes exactly what the interpreter of
+ * one element (lang_run.c) computes: the float operations round as it rounds (the loops below
+ * spell out sc_round for double and highp so that the compiler can vectorise them), and every
+ * other operation calls the same element function (lang_vm.h).
+ *
+ * Divergence: each lane has its own instruction address (pc), call stack and iteration count.
+ * While every running lane is at one address the block is "uniform" and runs unmasked; when a
+ * branch or a return sends lanes to different addresses, each step runs the instruction at the
+ * lowest address for the lanes that are there (an execution mask, as a list of lanes), and the
+ * block is uniform again when the lanes meet. Lanes are independent, so the order in which they
+ * advance changes nothing in their values; the lowest address first makes the lanes that left
+ * an if, a loop or a function early wait for the others where the code joins.
+ *
+ * Registers start at zero in a run of one element. A block does not clear its registers: a
+ * register is zeroed when its first access in the block is a read or a masked write, and only
+ * then (a generation number per register says whether it was written in this block), so a block
+ * costs what its instructions cost. Errors stop only their lane. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lang/lang_vm.h"
+#include "shadecalc/pmath.h"
+
+#if defined(__GNUC__) && !defined(__clang__)
+/* GCC's -O2 vectorises only loops whose trip count is a multiple of the vector length */
+#pragma GCC optimize("vect-cost-model=cheap")
+#endif
+
+/* Lanes per block: at most MAX_LANES, and the registers of a block within REGISTER_BUDGET
+ * doubles (2 MiB), so that they stay in the cache. */
+enum { MAX_LANES = 256, REGISTER_BUDGET = 1 << 18, DIVERGED = -1 };
+
+/* The lanes an instruction runs for: lanes idx[0..count), or 0..count-1 when idx is NULL (every
+ * lane of the block, unmasked). */
+typedef struct {
+    const int *idx;
+    int count;
+} lanes;
+
+/* Runs the statements after the lane set for each lane i of s (both loops plain, so that the
+ * unmasked one can be vectorised). */
+#define FOR_LANES(s, i, ...)                                                                       \
+    do {                                                                                           \
+        if ((s).idx) {                                                                             \
+            for (int j_ = 0; j_ < (s).count; j_++) {                                               \
+                int i = (s).idx[j_];                                                               \
+                __VA_ARGS__                                                                        \
+            }                                                                                      \
+        } else {                                                                                   \
+            for (int i = 0; i < (s).count; i++) {                                                  \
+                __VA_ARGS__                                                                        \
+            }                                                                                      \
+        }                                                                                          \
+    } while (0)
+
+typedef struct {
+    const sc_program *prog;
+    const sc_lang_block *job;
+    sc_prec p;
+    int bits;
+    int cap;   /* lanes of a column */
+    int width; /* lanes of this block (<= cap) */
+    int depth; /* call stack entries per lane */
+    long base; /* the element of lane 0 */
+    double *r;
+    unsigned *gen; /* gen[k] == cur: register k was written (or zeroed) in this block */
+    unsigned cur;
+    int *pcs, *sps, *stack; /* per lane; pcs only while the block is not uniform */
+    long *iterations;
+    int *live, n_live; /* lanes still running, ascending */
+    int *sel;          /* the lanes of a masked step */
+    unsigned char *stopped;
+    int n_stopped; /* lanes that stopped in this step (halted or failed) */
+    long failed;   /* the lowest failed element, or job->n */
+    sc_lang_error *err;
+} block_machine;
+
+static double *col(const block_machine *m, int reg) { return m->r + (size_t)reg * (size_t)m->cap; }
+
+/* ---- registers not yet written in this block ---- */
+
+/* Registers reg..reg+n-1 are read: those not written in this block are zeroed first. */
+static void reading(block_machine *m, int reg, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (m->gen[reg + k] != m->cur) {
+            memset(col(m, reg + k), 0, (size_t)m->width * sizeof(double));
+            m->gen[reg + k] = m->cur;
+        }
+}
+
+/* Registers reg..reg+n-1 are written for the lanes of s: every lane, or the others must read 0. */
+static void writing(block_machine *m, lanes s, int reg, int n)
+{
+    if (s.idx) {
+        reading(m, reg, n);
+        return;
+    }
+    for (int k = 0; k < n; k++)
+        m->gen[reg + k] = m->cur;
+}
+
+static int size_of(sc_ltype t) { return sc_ltype_size(t); }
+
+/* The registers instruction `in` reads and writes, prepared as above. */
+static void prepare(block_machine *m, const insn *in, lanes s)
+{
+    const int *dims;
+    const builtin_call *call;
+    int na = in->flags & BCAST_A ? 1 : in->n, nb = in->flags & BCAST_B ? 1 : in->n;
+    switch ((opcode)in->op) {
+    case OP_ADD:
+    case OP_SUB:
+    case OP_MUL:
+    case OP_DIV:
+    case OP_MOD:
+    case OP_BITAND:
+    case OP_BITOR:
+    case OP_BITXOR:
+    case OP_SHL:
+    case OP_SHR: reading(m, in->b, nb); /* fall through */
+    case OP_MOV:
+    case OP_CVT:
+    case OP_NEG:
+    case OP_BITNOT:
+    case OP_NOT:
+        reading(m, in->a, na);
+        writing(m, s, in->dst, in->n);
+        break;
+    case OP_LT:
+    case OP_LE:
+    case OP_EQ:
+    case OP_NE:
+        reading(m, in->a, in->op == OP_LT || in->op == OP_LE ? 1 : in->n);
+        reading(m, in->b, in->op == OP_LT || in->op == OP_LE ? 1 : in->n);
+        writing(m, s, in->dst, 1);
+        break;
+    case OP_MATMUL:
+        dims = m->prog->aux + in->c;
+        reading(m, in->a, dims[0] * dims[1]);
+        reading(m, in->b, dims[1] * dims[2]);
+        writing(m, s, in->dst, dims[0] * dims[2]);
+        break;
+    case OP_JZ:
+    case OP_JNZ: reading(m, in->a, 1); break;
+    case OP_BUILTIN:
+        call = &m->prog->calls[in->c];
+        for (int i = 0; i < call->n_args; i++)
+            reading(m, call->args[i], size_of(call->types[i]));
+        writing(m, s, in->dst, size_of(call->result));
+        break;
+    case OP_LOAD:
+        reading(m, in->a, in->c * in->kind);
+        reading(m, in->b, 1);
+        writing(m, s, in->dst, in->n);
+        break;
+    case OP_STORE: /* writes one element of the array: the others keep their values */
+        reading(m, in->a, in->n);
+        reading(m, in->b, 1);
+        reading(m, in->dst, in->c * in->kind);
+        break;
+    case OP_EMIT: reading(m, in->a, size_of(m->prog->emits[in->c].type)); break;
+    default: break;
+    }
+}
+
+/* ---- lanes that stop ---- */
+
+static void stop_lane(block_machine *m, int lane)
+{
+    m->stopped[lane] = 1;
+    m->n_stopped++;
+}
+
+/* Lane `lane` failed with *e: its element is reported if it is the lowest that failed. */
+static void fail_lane(block_machine *m, int lane, const sc_lang_error *e)
+{
+    stop_lane(m, lane);
+    if (m->base + lane < m->failed) {
+        m->failed = m->base + lane;
+        *m->err = *e;
+    }
+}
+
+static void drop_stopped(block_machine *m)
+{
+    int kept = 0;
+    for (int j = 0; j < m->n_live; j++) {
+        int lane = m->live[j];
+        if (m->stopped[lane])
+            m->stopped[lane] = 0;
+        else
+            m->live[kept++] = lane;
+    }
+    m->n_live = kept;
+    m->n_stopped = 0;
+}
+
+/* ---- domain reports of one lane ---- */
+
+typedef struct {
+    const block_machine *m;
+    int lane;
+} lane_report;
+
+static void forward_domain(void *user, int line, int column, const char *func, const char *rule)
+{
+    const lane_report *l = user;
+    const sc_lang_block *job = l->m->job;
+    if (job->on_domain)
+        job->on_domain(job->user, l->m->base + l->lane, line, column, func, rule);
+}
+
+/* ---- arithmetic over columns ---- */
+
+#define ROUND_DOUBLE(x) (x)
+#define ROUND_HIGHP(x) ((double)(float)(x)) /* sc_round(SC_HIGHP, x) */
+#define ROUND_ANY(x) sc_round(p, (x))
+
+/* d = a op b for the lanes of s, rounded by ROUND as sc_p_add ... sc_p_div round. */
+#define ARITHMETIC(ROUND)                                                                          \
+    switch (op) {                                                                                  \
+    case OP_ADD: FOR_LANES(s, i, d[i] = ROUND(a[i] + b[i]);); break;                               \
+    case OP_SUB: FOR_LANES(s, i, d[i] = ROUND(a[i] - b[i]);); break;                               \
+    case OP_MUL: FOR_LANES(s, i, d[i] = ROUND(a[i] * b[i]);); break;                               \
+    default: FOR_LANES(s, i, d[i] = ROUND(a[i] / b[i]);); break;                                   \
+    }
+
+static void column_arithmetic(sc_prec p, int op, double *d, const double *a, const double *b,
+                              lanes s)
+{
+    if (p == SC_DOUBLE)
+        ARITHMETIC(ROUND_DOUBLE)
+    else if (p == SC_HIGHP)
+        ARITHMETIC(ROUND_HIGHP)
+    else
+        ARITHMETIC(ROUND_ANY)
+}
+
+static void op_binary(block_machine *m, const insn *in, lanes s)
+{
+    int sa = in->flags & BCAST_A ? 0 : 1, sb = in->flags & BCAST_B ? 0 : 1;
+    for (int k = 0; k < in->n; k++) {
+        double *d = col(m, in->dst + k);
+        const double *a = col(m, in->a + k * sa), *b = col(m, in->b + k * sb);
+        if (in->kind == SC_KIND_FLOAT) {
+            column_arithmetic(m->p, in->op, d, a, b, s);
+            continue;
+        }
+        FOR_LANES(s, i, lane_report l = {m, i}; vm_report r = {forward_domain, &l};
+                  d[i] = vm_integer_binary(in, m->bits, a[i], b[i], &r););
+    }
+}
+
+static void op_unary(block_machine *m, const insn *in, lanes s)
+{
+    for (int k = 0; k < in->n; k++) {
+        double *d = col(m, in->dst + k);
+        const double *a = col(m, in->a + k);
+        if (in->op == OP_NEG && in->kind == SC_KIND_FLOAT)
+            FOR_LANES(s, i, d[i] = -a[i];);
+        else
+            FOR_LANES(s, i, d[i] = vm_unary(in, m->bits, a[i]););
+    }
+}
+
+static void op_convert(block_machine *m, const insn *in, lanes s)
+{
+    sc_kind to = (sc_kind)in->kind, from = (sc_kind)in->kind2;
+    for (int k = 0; k < in->n; k++) {
+        double *d = col(m, in->dst + k);
+        const double *a = col(m, in->a + k);
+        FOR_LANES(s, i, d[i] = sc_convert(to, from, a[i], m->p););
+    }
+}
+
+static void op_compare(block_machine *m, const insn *in, lanes s)
+{
+    double *d = col(m, in->dst);
+    const double *a = col(m, in->a), *b = col(m, in->b);
+    switch (in->op) {
+    case OP_LT: FOR_LANES(s, i, d[i] = a[i] < b[i];); return;
+    case OP_LE: FOR_LANES(s, i, d[i] = a[i] <= b[i];); return;
+    default: break;
+    }
+    /* == and != of whole values: every component of a lane is read before its result is
+     * written (the result may overwrite an operand) */
+    FOR_LANES(s, i, int equal = 1; for (int k = 0; k < in->n; k++) equal &=
+                                   col(m, in->a + k)[i] == col(m, in->b + k)[i];
+              d[i] = in->op == OP_EQ ? equal : !equal;);
+}
+
+/* memmove of n registers for the lanes of s. */
+static void op_move(block_machine *m, const insn *in, lanes s)
+{
+    if (!s.idx) {
+        memmove(col(m, in->dst), col(m, in->a), (size_t)in->n * (size_t)m->cap * sizeof(double));
+        return;
+    }
+    int forward = in->dst <= in->a;
+    for (int j = 0; j < in->n; j++) {
+        int k = forward ? j : in->n - 1 - j;
+        double *d = col(m, in->dst + k);
+        const double *a = col(m, in->a + k);
+        FOR_LANES(s, i, d[i] = a[i];);
+    }
+}
+
+/* n registers from `reg` of lane i into v[0..n), or back. */
+static void gather(const block_machine *m, int reg, int n, int lane, double *v)
+{
+    for (int k = 0; k < n; k++)
+        v[k] = col(m, reg + k)[lane];
+}
+
+static void scatter(block_machine *m, int reg, int n, int lane, const double *v)
+{
+    for (int k = 0; k < n; k++)
+        col(m, reg + k)[lane] = v[k];
+}
+
+static void op_matmul(block_machine *m, const insn *in, lanes s)
+{
+    const int *dims = m->prog->aux + in->c;
+    FOR_LANES(s, i, double a[16]; double b[16]; double out[16];
+              gather(m, in->a, dims[0] * dims[1], i, a); gather(m, in->b, dims[1] * dims[2], i, b);
+              vm_matmul(m->p, dims, a, b, out); scatter(m, in->dst, dims[0] * dims[2], i, out););
+}
+
+/* ---- built-ins ---- */
+
+static int overlaps(int a, int na, int b, int nb) { return a < b + nb && b < a + na; }
+
+/* A component-wise float built-in: its scalar function over each component's column. */
+static void builtin_columns(block_machine *m, const insn *in, const builtin_call *call,
+                            const sc_builtin_scalar *f, lanes s)
+{
+    const char *name = sc_builtin_name(call->index);
+    sc_prec p = m->p;
+    for (int k = 0; k < size_of(call->result); k++) {
+        const double *c[3] = {NULL, NULL, NULL};
+        for (int j = 0; j < call->n_args; j++)
+            c[j] = col(m, call->args[j] + (sc_lt_is_scalar(call->types[j]) ? 0 : k));
+        double *d = col(m, in->dst + k);
+        if (f->domain)
+            FOR_LANES(s, i, double a[3] = {c[0][i], c[1] ? c[1][i] : 0, c[2] ? c[2][i] : 0};
+                      const char *rule = f->domain(a); lane_report l = {m, i};
+                      if (rule) forward_domain(&l, in->line, in->column, name, rule););
+        if (f->f1)
+            FOR_LANES(s, i, d[i] = f->f1(p, c[0][i]););
+        else if (f->f2)
+            FOR_LANES(s, i, d[i] = f->f2(p, c[0][i], c[1][i]););
+        else
+            FOR_LANES(s, i, d[i] = f->f3(p, c[0][i], c[1][i], c[2][i]););
+    }
+}
+
+/* Any built-in, one lane at a time through the interpreter's element function. */
+static void builtin_lanes(block_machine *m, const insn *in, const builtin_call *call, lanes s)
+{
+    int n = size_of(call->result);
+    FOR_LANES(s, i, double args[4][16]; const double *pa[4]; double out[16];
+              for (int j = 0; j < call->n_args; j++) {
+                  gather(m, call->args[j], size_of(call->types[j]), i, args[j]);
+                  pa[j] = args[j];
+              } lane_report l = {m, i};
+              vm_report r = {forward_domain, &l}; vm_builtin(m->p, call, in, pa, out, &r);
+              scatter(m, in->dst, n, i, out););
+}
+
+static void op_builtin(block_machine *m, const insn *in, lanes s)
+{
+    const builtin_call *call = &m->prog->calls[in->c];
+    sc_builtin_scalar f;
+    int separate = 1; /* the result overlaps no argument */
+    for (int j = 0; j < call->n_args; j++)
+        separate &= !overlaps(in->dst, size_of(call->result), call->args[j],
+                              size_of(call->types[j]));
+    if (!call->is_lang && separate && sc_builtin_componentwise(call->index, &f) == 0)
+        builtin_columns(m, in, call, &f, s);
+    else
+        builtin_lanes(m, in, call, s);
+}
+
+/* ---- indexing, values ---- */
+
+static void op_index(block_machine *m, const insn *in, lanes s)
+{
+    const double *index = col(m, in->b);
+    FOR_LANES(s, i, long long offset; sc_lang_error e;
+              if (vm_index(in, index[i], &offset, &e) < 0) {
+                  fail_lane(m, i, &e);
+                  continue;
+              } for (int k = 0; k < in->n; k++) {
+                  if (in->op == OP_LOAD)
+                      col(m, in->dst + k)[i] = col(m, in->a + (int)offset + k)[i];
+                  else
+                      col(m, in->dst + (int)offset + k)[i] = col(m, in->a + k)[i];
+              });
+}
+
+static void op_emit(block_machine *m, const insn *in, lanes s)
+{
+    if (in->c != m->job->value)
+        return;
+    for (int k = 0; k < size_of(m->prog->emits[in->c].type); k++) {
+        double *out = m->job->out[k] + m->base;
+        const double *a = col(m, in->a + k);
+        FOR_LANES(s, i, out[i] = a[i];);
+    }
+}
+
+/* ---- control flow: each returns the lanes' next address, or DIVERGED after setting pcs ---- */
+
+static int branch(block_machine *m, const insn *in, int pc, lanes s)
+{
+    const double *c = col(m, in->a);
+    int jump_on_zero = in->op == OP_JZ, taken = 0;
+    FOR_LANES(s, i, taken += (c[i] == 0.0) == jump_on_zero;);
+    if (taken == s.count || taken == 0)
+        return taken ? in->c : pc + 1;
+    FOR_LANES(s, i, m->pcs[i] = (c[i] == 0.0) == jump_on_zero ? in->c : pc + 1;);
+    return DIVERGED;
+}
+
+static void count_iteration(block_machine *m, const insn *in, lanes s)
+{
+    long bound = m->prog->max_iterations;
+    FOR_LANES(s, i, if (++m->iterations[i] > bound) {
+        sc_lang_error e;
+        vm_too_many_iterations(in, bound, &e);
+        fail_lane(m, i, &e);
+    });
+}
+
+static int call(block_machine *m, const insn *in, int pc, lanes s)
+{
+    FOR_LANES(s, i, if (m->sps[i] > m->prog->max_call_depth) {
+        sc_lang_error e;
+        vm_too_deep(in, m->sps[i], &e);
+        fail_lane(m, i, &e);
+    } else m->stack[i * m->depth + m->sps[i]++] = pc + 1;);
+    return in->c;
+}
+
+static int ret(block_machine *m, lanes s)
+{
+    int first = -1, same = 1;
+    FOR_LANES(s, i, m->pcs[i] = m->stack[i * m->depth + --m->sps[i]];
+              same &= first < 0 || m->pcs[i] == first; first = m->pcs[i];);
+    return same ? first : DIVERGED;
+}
+
+static void no_return(block_machine *m, const insn *in, lanes s)
+{
+    sc_lang_error e;
+    vm_no_return(in, &e);
+    FOR_LANES(s, i, fail_lane(m, i, &e););
+}
+
+/* Runs instruction pc for the lanes of s. */
+static int step(block_machine *m, const insn *in, int pc, lanes s)
+{
+    switch ((opcode)in->op) {
+    case OP_MOV: op_move(m, in, s); break;
+    case OP_CVT: op_convert(m, in, s); break;
+    case OP_ADD:
+    case OP_SUB:
+    case OP_MUL:
+    case OP_DIV:
+    case OP_MOD:
+    case OP_BITAND:
+    case OP_BITOR:
+    case OP_BITXOR:
+    case OP_SHL:
+    case OP_SHR: op_binary(m, in, s); break;
+    case OP_NEG:
+    case OP_BITNOT:
+    case OP_NOT: op_unary(m, in, s); break;
+    case OP_LT:
+    case OP_LE:
+    case OP_EQ:
+    case OP_NE: op_compare(m, in, s); break;
+    case OP_MATMUL: op_matmul(m, in, s); break;
+    case OP_JMP: return in->c;
+    case OP_JZ:
+    case OP_JNZ: return branch(m, in, pc, s);
+    case OP_LOOP: count_iteration(m, in, s); break;
+    case OP_CALL: return call(m, in, pc, s);
+    case OP_RET: return ret(m, s);
+    case OP_NORETURN: no_return(m, in, s); break;
+    case OP_BUILTIN: op_builtin(m, in, s); break;
+    case OP_LOAD:
+    case OP_STORE: op_index(m, in, s); break;
+    case OP_EMIT: op_emit(m, in, s); break;
+    case OP_HALT: FOR_LANES(s, i, stop_lane(m, i);); break;
+    }
+    return pc + 1;
+}
+
+/* ---- the scheduler ---- */
+
+/* The lanes at the lowest address, into m->sel; returns that address. */
+static int lowest_address(block_machine *m, lanes *s)
+{
+    int pc = m->pcs[m->live[0]], count = 0;
+    for (int j = 1; j < m->n_live; j++)
+        pc = m->pcs[m->live[j]] < pc ? m->pcs[m->live[j]] : pc;
+    for (int j = 0; j < m->n_live; j++)
+        if (m->pcs[m->live[j]] == pc)
+            m->sel[count++] = m->live[j];
+    *s = (lanes){m->sel, count};
+    return pc;
+}
+
+/* 1 with *pc set if every running lane is at one address. */
+static int converged(const block_machine *m, int *pc)
+{
+    for (int j = 1; j < m->n_live; j++)
+        if (m->pcs[m->live[j]] != m->pcs[m->live[0]])
+            return 0;
+    *pc = m->n_live ? m->pcs[m->live[0]] : 0;
+    return 1;
+}
+
+static void run_lanes(block_machine *m)
+{
+    int uniform = 1, upc = 0;
+    while (m->n_live > 0) {
+        lanes s = {m->n_live == m->width ? NULL : m->live, m->n_live};
+        int pc = uniform ? upc : lowest_address(m, &s);
+        const insn *in = &m->prog->code[pc];
+        prepare(m, in, s);
+        int next = step(m, in, pc, s);
+        if (next == DIVERGED)
+            uniform = 0;
+        else if (uniform)
+            upc = next;
+        else
+            FOR_LANES(s, i, m->pcs[i] = next;);
+        if (m->n_stopped)
+            drop_stopped(m);
+        if (!uniform)
+            uniform = converged(m, &upc);
+    }
+}
+
+/* ---- blocks ---- */
+
+static void fill(block_machine *m, int reg, const double *values, double scalar, sc_kind kind)
+{
+    double *d = col(m, reg);
+    for (int i = 0; i < m->width; i++)
+        d[i] = vm_in_precision(m->p, m->bits, kind, values ? values[i] : scalar);
+    m->gen[reg] = m->cur;
+}
+
+static void start_block(block_machine *m, long base, int width)
+{
+    const sc_program *pr = m->prog;
+    m->base = base;
+    m->width = width;
+    if (++m->cur == 0) { /* the generations wrapped: start them again */
+        memset(m->gen, 0, (size_t)pr->n_regs * sizeof *m->gen);
+        m->cur = 1;
+    }
+    for (int i = 0; i < pr->n_consts; i++)
+        fill(m, pr->consts[i].reg, NULL, pr->consts[i].value, pr->consts[i].kind);
+    int column = 0;
+    for (int i = 0; i < pr->n_inputs; i++)
+        for (int k = 0; k < size_of(pr->input_types[i]); k++)
+            fill(m, pr->input_regs[i] + k, m->job->inputs[column++] + base, 0.0,
+                 (sc_kind)pr->input_types[i].kind);
+    for (int i = 0; i < width; i++) {
+        m->live[i] = i;
+        m->sps[i] = 0;
+        m->iterations[i] = 0;
+    }
+    m->n_live = width;
+}
+
+static int lanes_for(const sc_program *prog, long n)
+{
+    long cap = REGISTER_BUDGET / ((long)prog->n_regs + 1);
+    cap = cap < 1 ? 1 : cap > MAX_LANES ? MAX_LANES : cap;
+    return (int)(cap < n ? cap : n);
+}
+
+static int allocate(block_machine *m)
+{
+    size_t cap = (size_t)m->cap, regs = (size_t)m->prog->n_regs + 1;
+    m->r = malloc(regs * cap * sizeof *m->r);
+    m->gen = calloc(regs, sizeof *m->gen);
+    m->pcs = malloc(cap * sizeof *m->pcs);
+    m->sps = malloc(cap * sizeof *m->sps);
+    m->stack = malloc(cap * (size_t)m->depth * sizeof *m->stack);
+    m->iterations = malloc(cap * sizeof *m->iterations);
+    m->live = malloc(cap * sizeof *m->live);
+    m->sel = malloc(cap * sizeof *m->sel);
+    m->stopped = calloc(cap, 1);
+    return m->r && m->gen && m->pcs && m->sps && m->stack && m->iterations && m->live && m->sel &&
+                   m->stopped
+               ? 0
+               : -1;
+}
+
+static void release(block_machine *m)
+{
+    free(m->r);
+    free(m->gen);
+    free(m->pcs);
+    free(m->sps);
+    free(m->stack);
+    free(m->iterations);
+    free(m->live);
+    free(m->sel);
+    free(m->stopped);
+}
+
+/* ---- one element at a time: for bytecode this file does not know ---- */
+
+typedef struct {
+    const sc_lang_block *job;
+    const char *text; /* the chosen value's source text (identifies its emits) */
+    long element;
+} each_run;
+
+static int capture(void *user, const char *text, int len, int line, const sc_lvalue *v)
+{
+    const each_run *e = user;
+    (void)len, (void)line;
+    for (int k = 0; text == e->text && k < sc_ltype_size(v->type); k++)
+        e->job->out[k][e->element] = v->v[k];
+    return 0;
+}
+
+static void forward_each(void *user, int line, int column, const char *func, const char *rule)
+{
+    const each_run *e = user;
+    if (e->job->on_domain)
+        e->job->on_domain(e->job->user, e->element, line, column, func, rule);
+}
+
+static long run_each(const sc_program *prog, const sc_lang_block *job, sc_lang_error *err)
+{
+    each_run e = {job, prog->src + prog->emits[job->value].start, 0};
+    long failed = job->n;
+    for (; e.element < job->n; e.element++) {
+        sc_lvalue in[64];
+        int column = 0;
+        for (int i = 0; i < prog->n_inputs; i++) {
+            in[i].type = prog->input_types[i];
+            for (int k = 0; k < size_of(in[i].type); k++)
+                in[i].v[k] = job->inputs[column++][e.element];
+        }
+        sc_lang_error e_err;
+        if (sc_program_run(prog, job->prec, in, capture, forward_each, &e, &e_err) < 0 &&
+            failed == job->n) {
+            failed = e.element;
+            *err = e_err;
+        }
+    }
+    return failed;
+}
+
+static int knows_every_opcode(const sc_program *prog)
+{
+    for (int pc = 0; pc < prog->n_code; pc++)
+        if (prog->code[pc].op > OP_HALT)
+            return 0;
+    return 1;
+}
+
+/* ---- the API ---- */
+
+int sc_program_values(const sc_program *prog) { return prog->n_emits; }
+
+sc_ltype sc_program_value_type(const sc_program *prog, int value)
+{
+    return prog->emits[value].type;
+}
+
+long sc_program_run_block(const sc_program *prog, const sc_lang_block *job, sc_lang_error *err)
+{
+    memset(err, 0, sizeof *err);
+    if (job->n <= 0)
+        return 0;
+    if (job->value < 0 || job->value >= prog->n_emits) {
+        snprintf(err->message, sizeof err->message, "the program has no value %d", job->value);
+        return 0;
+    }
+    if (!knows_every_opcode(prog))
+        return run_each(prog, job, err);
+    block_machine m = {.prog = prog, .job = job, .p = job->prec, .bits = sc_int_bits(job->prec),
+                       .cap = lanes_for(prog, job->n), .depth = prog->max_call_depth + 1,
+                       .failed = job->n, .err = err};
+    if (allocate(&m) < 0) {
+        release(&m);
+        snprintf(err->message, sizeof err->message, "out of memory");
+        return 0;
+    }
+    for (long base = 0; base < job->n; base += m.cap) {
+        start_block(&m, base, job->n - base < m.cap ? (int)(job->n - base) : m.cap);
+        run_lanes(&m);
+    }
+    release(&m);
+    return m.failed;
+}
