@@ -20,7 +20,7 @@ expect "normal: -f before the last points" 0 'nx,ny,nz,area,degenerate
 
 # '--' ends the options.
 expect "eval: -- then a negative number"  0 '-1' '' -- eval -- -1
-expect "eval: -- then an option's name"   2 '' "~unknown variable 'precision'" -- eval -- 1 --precision
+expect "eval: -- then an option's name"   2 '' "~'precision' is not a variable" -- eval -- 1 --precision
 expect "sweep: -- keeps -o an operand"    2 '' "~unexpected argument '-o'" -- sweep --var x=0:1:2 x -- -o
 
 # Negative numbers and expressions are operands: '-' then a digit, '.' or '('.

@@ -286,7 +286,7 @@ static char *run_to_text(const sc_sweep_grid *g, int threads, runner_state *s,
     char *text = NULL;
     size_t size = 0;
     FILE *out = open_memstream(&text, &size);
-    sc_sweep_job job = {g, 1, eval_poly, s, consume_in_order, &t, out, NULL, threads};
+    sc_sweep_job job = {g, 1, eval_poly, s, consume_in_order, &t, out, NULL, threads, NULL};
     /* eval and consume share the state: eval only reads fail_at */
     *status = sc_sweep_run(&job, err, sizeof err);
     fclose(out);
@@ -349,7 +349,7 @@ static void write_errors_are_reported(void **state)
     static const char *const names[] = {"x", "y", "value"};
     sc_sweep_table t = {SC_SWEEP_CSV, SC_DOUBLE, names, 2, 1};
     runner_state s = {.fail_at = -1};
-    sc_sweep_job job = {&g, 1, eval_poly, &s, NULL, &t, full, NULL, 2};
+    sc_sweep_job job = {&g, 1, eval_poly, &s, NULL, &t, full, NULL, 2, NULL};
     assert_int_equal(sc_sweep_run(&job, err, sizeof err), SC_SWEEP_WRITE_ERROR);
     fclose(full);
     sc_sweep_grid_free(&g);
@@ -383,7 +383,7 @@ static void memory_does_not_grow_with_rows(void **state)
     sc_sweep_grid small, large; /* integers: quick to print */
     grid_of(&small, (const char *const[]){"x=0:9999:10000", "y=0"}, 2);
     grid_of(&large, (const char *const[]){"x=0:299999:300000", "y=0"}, 2);
-    sc_sweep_job job = {&small, 1, eval_poly, &s, NULL, &t, null, NULL, 2};
+    sc_sweep_job job = {&small, 1, eval_poly, &s, NULL, &t, null, NULL, 2, NULL};
     assert_int_equal(sc_sweep_run(&job, err, sizeof err), SC_SWEEP_OK); /* warms the heap */
     long before = peak_rss_kb();
     job.grid = &large;
