@@ -19,6 +19,7 @@
  * register is zeroed when its first access in the block is a read or a masked write, and only
  * then (a generation number per register says whether it was written in this block), so a block
  * costs what its instructions cost. Errors stop only their lane. */
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -374,6 +375,41 @@ static void builtin_lanes(block_machine *m, const insn *in, const builtin_call *
               scatter(m, in->dst, n, i, out););
 }
 
+/* Column d = dot of the n components from registers a and b, rounded as sc_p_dot rounds it
+ * (tmp: a scratch column). */
+static void column_dot(block_machine *m, int a, int b, int n, double *d, double *tmp, lanes s)
+{
+    column_arithmetic(m->p, OP_MUL, d, col(m, a), col(m, b), s);
+    for (int k = 1; k < n; k++) {
+        column_arithmetic(m->p, OP_MUL, tmp, col(m, a + k), col(m, b + k), s);
+        column_arithmetic(m->p, OP_ADD, d, d, tmp, s);
+    }
+}
+
+/* dot, length and normalize over columns, rounded as sc_p_dot, sc_p_length and sc_p_normalize
+ * round them; 0, or -1 for the other built-ins. */
+static int builtin_geometric(block_machine *m, const insn *in, const builtin_call *call, lanes s)
+{
+    const char *name = sc_builtin_name(call->index);
+    int n = size_of(call->types[0]), arg = call->args[0];
+    double *tmp = col(m, m->prog->n_regs + 1), *len = col(m, m->prog->n_regs + 2);
+    sc_prec p = m->p;
+    if (strcmp(name, "dot") == 0) {
+        column_dot(m, arg, call->args[1], n, col(m, in->dst), tmp, s);
+        return 0;
+    }
+    if (strcmp(name, "length") != 0 && strcmp(name, "normalize") != 0)
+        return -1;
+    double *d = col(m, in->dst);
+    column_dot(m, arg, arg, n, len, tmp, s);
+    FOR_LANES(s, i, len[i] = sc_p_sqrt(p, len[i]););
+    if (name[0] == 'l')
+        FOR_LANES(s, i, d[i] = len[i];);
+    for (int k = 0; name[0] == 'n' && k < n; k++)
+        column_arithmetic(p, OP_DIV, col(m, in->dst + k), col(m, arg + k), len, s);
+    return 0;
+}
+
 static void op_builtin(block_machine *m, const insn *in, lanes s)
 {
     const builtin_call *call = &m->prog->calls[in->c];
@@ -384,7 +420,7 @@ static void op_builtin(block_machine *m, const insn *in, lanes s)
                               size_of(call->types[j]));
     if (!call->is_lang && separate && sc_builtin_componentwise(call->index, &f) == 0)
         builtin_columns(m, in, call, &f, s);
-    else
+    else if (call->is_lang || !separate || builtin_geometric(m, in, call, s) < 0)
         builtin_lanes(m, in, call, s);
 }
 
@@ -506,12 +542,21 @@ static int step(block_machine *m, const insn *in, int pc, lanes s)
 
 /* ---- the scheduler ---- */
 
-/* The lanes at the lowest address, into m->sel; returns that address. */
-static int lowest_address(block_machine *m, lanes *s)
+/* The lanes at the lowest address, into m->sel; returns that address, and in *others the
+ * lowest address of the other lanes (INT_MAX if none). */
+static int lowest_address(block_machine *m, lanes *s, int *others)
 {
-    int pc = m->pcs[m->live[0]], count = 0;
-    for (int j = 1; j < m->n_live; j++)
-        pc = m->pcs[m->live[j]] < pc ? m->pcs[m->live[j]] : pc;
+    int pc = INT_MAX, count = 0;
+    *others = INT_MAX;
+    for (int j = 0; j < m->n_live; j++) {
+        int at = m->pcs[m->live[j]];
+        if (at < pc) {
+            *others = pc;
+            pc = at;
+        } else if (at > pc && at < *others) {
+            *others = at;
+        }
+    }
     for (int j = 0; j < m->n_live; j++)
         if (m->pcs[m->live[j]] == pc)
             m->sel[count++] = m->live[j];
@@ -525,40 +570,74 @@ static int converged(const block_machine *m, int *pc)
     for (int j = 1; j < m->n_live; j++)
         if (m->pcs[m->live[j]] != m->pcs[m->live[0]])
             return 0;
-    *pc = m->n_live ? m->pcs[m->live[0]] : 0;
+    *pc = m->pcs[m->live[0]];
     return 1;
 }
 
+/* Runs the block's lanes to their end. Uniform: every lane at pc, unmasked. Otherwise the lanes
+ * of s are at pc, the lowest address, and go on alone while they stay below `others` (the
+ * lowest address of the waiting lanes); each lane's pcs entry is valid when they stop. */
 static void run_lanes(block_machine *m)
 {
-    int uniform = 1, upc = 0;
+    int uniform = 1, pc = 0, others = INT_MAX;
+    lanes s = {NULL, m->width};
     while (m->n_live > 0) {
-        lanes s = {m->n_live == m->width ? NULL : m->live, m->n_live};
-        int pc = uniform ? upc : lowest_address(m, &s);
+        if (uniform)
+            s = (lanes){m->n_live == m->width ? NULL : m->live, m->n_live};
         const insn *in = &m->prog->code[pc];
         prepare(m, in, s);
-        int next = step(m, in, pc, s);
-        if (next == DIVERGED)
-            uniform = 0;
-        else if (uniform)
-            upc = next;
-        else
-            FOR_LANES(s, i, m->pcs[i] = next;);
-        if (m->n_stopped)
+        int next = step(m, in, pc, s), stopped = m->n_stopped;
+        if (stopped)
             drop_stopped(m);
+        if (m->n_live == 0)
+            break;
+        if (uniform && next != DIVERGED) {
+            pc = next;
+            continue;
+        }
+        if (!uniform && next != DIVERGED && !stopped && next < others) {
+            pc = next; /* the same lanes go on */
+            continue;
+        }
+        if (next != DIVERGED)
+            FOR_LANES(s, i, m->pcs[i] = next;);
+        uniform = converged(m, &pc);
         if (!uniform)
-            uniform = converged(m, &upc);
+            pc = lowest_address(m, &s, &others);
     }
 }
 
 /* ---- blocks ---- */
 
-static void fill(block_machine *m, int reg, const double *values, double scalar, sc_kind kind)
+/* Input column `reg` of this block from values[0..width), rounded or wrapped to the precision. */
+static void fill_input(block_machine *m, int reg, const double *values, sc_kind kind)
 {
     double *d = col(m, reg);
-    for (int i = 0; i < m->width; i++)
-        d[i] = vm_in_precision(m->p, m->bits, kind, values ? values[i] : scalar);
+    lanes all = {NULL, m->width};
+    if (kind == SC_KIND_FLOAT && m->p == SC_DOUBLE)
+        memcpy(d, values, (size_t)m->width * sizeof *d);
+    else if (kind == SC_KIND_FLOAT && m->p == SC_HIGHP)
+        FOR_LANES(all, i, d[i] = ROUND_HIGHP(values[i]););
+    else
+        FOR_LANES(all, i, d[i] = vm_in_precision(m->p, m->bits, kind, values[i]););
     m->gen[reg] = m->cur;
+}
+
+/* The constants, in every lane: written by the first block, kept by the others (no instruction
+ * writes a constant's register). */
+static void fill_constants(block_machine *m, int first_block)
+{
+    const sc_program *pr = m->prog;
+    for (int i = 0; i < pr->n_consts; i++) {
+        int reg = pr->consts[i].reg;
+        if (first_block) {
+            double v = vm_in_precision(m->p, m->bits, pr->consts[i].kind, pr->consts[i].value);
+            double *d = col(m, reg);
+            for (int lane = 0; lane < m->cap; lane++)
+                d[lane] = v;
+        }
+        m->gen[reg] = m->cur;
+    }
 }
 
 static void start_block(block_machine *m, long base, int width)
@@ -570,13 +649,12 @@ static void start_block(block_machine *m, long base, int width)
         memset(m->gen, 0, (size_t)pr->n_regs * sizeof *m->gen);
         m->cur = 1;
     }
-    for (int i = 0; i < pr->n_consts; i++)
-        fill(m, pr->consts[i].reg, NULL, pr->consts[i].value, pr->consts[i].kind);
+    fill_constants(m, base == 0);
     int column = 0;
     for (int i = 0; i < pr->n_inputs; i++)
         for (int k = 0; k < size_of(pr->input_types[i]); k++)
-            fill(m, pr->input_regs[i] + k, m->job->inputs[column++] + base, 0.0,
-                 (sc_kind)pr->input_types[i].kind);
+            fill_input(m, pr->input_regs[i] + k, m->job->inputs[column++] + base,
+                       (sc_kind)pr->input_types[i].kind);
     for (int i = 0; i < width; i++) {
         m->live[i] = i;
         m->sps[i] = 0;
@@ -595,7 +673,7 @@ static int lanes_for(const sc_program *prog, long n)
 static int allocate(block_machine *m)
 {
     size_t cap = (size_t)m->cap, regs = (size_t)m->prog->n_regs + 1;
-    m->r = malloc(regs * cap * sizeof *m->r);
+    m->r = malloc((regs + 2) * cap * sizeof *m->r); /* and two scratch columns */
     m->gen = calloc(regs, sizeof *m->gen);
     m->pcs = malloc(cap * sizeof *m->pcs);
     m->sps = malloc(cap * sizeof *m->sps);
