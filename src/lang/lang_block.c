@@ -115,33 +115,21 @@ static void prepare(block_machine *m, const insn *in, lanes s)
     const int *dims;
     const builtin_call *call;
     int na = in->flags & BCAST_A ? 1 : in->n, nb = in->flags & BCAST_B ? 1 : in->n;
-    switch ((opcode)in->op) {
-    case OP_ADD:
-    case OP_SUB:
-    case OP_MUL:
-    case OP_DIV:
-    case OP_MOD:
-    case OP_BITAND:
-    case OP_BITOR:
-    case OP_BITXOR:
-    case OP_SHL:
-    case OP_SHR: reading(m, in->b, nb); /* fall through */
-    case OP_MOV:
-    case OP_CVT:
-    case OP_NEG:
-    case OP_BITNOT:
-    case OP_NOT:
+    if (vm_is_compare(in->op)) {
+        int n = in->op == OP_LT || in->op == OP_LE ? 1 : in->n;
+        reading(m, in->a, n);
+        reading(m, in->b, n);
+        writing(m, s, in->dst, 1);
+        return;
+    }
+    if (vm_is_binary(in->op) || vm_is_unary(in->op) || in->op == OP_MOV || in->op == OP_CVT) {
+        if (vm_is_binary(in->op))
+            reading(m, in->b, nb);
         reading(m, in->a, na);
         writing(m, s, in->dst, in->n);
-        break;
-    case OP_LT:
-    case OP_LE:
-    case OP_EQ:
-    case OP_NE:
-        reading(m, in->a, in->op == OP_LT || in->op == OP_LE ? 1 : in->n);
-        reading(m, in->b, in->op == OP_LT || in->op == OP_LE ? 1 : in->n);
-        writing(m, s, in->dst, 1);
-        break;
+        return;
+    }
+    switch ((opcode)in->op) {
     case OP_MATMUL:
         dims = m->prog->aux + in->c;
         reading(m, in->a, dims[0] * dims[1]);
@@ -501,28 +489,12 @@ static void no_return(block_machine *m, const insn *in, lanes s)
 }
 
 /* Runs instruction pc for the lanes of s. */
-static int step(block_machine *m, const insn *in, int pc, lanes s)
+/* The instructions other than arithmetic and comparisons. */
+static int other_step(block_machine *m, const insn *in, int pc, lanes s)
 {
     switch ((opcode)in->op) {
     case OP_MOV: op_move(m, in, s); break;
     case OP_CVT: op_convert(m, in, s); break;
-    case OP_ADD:
-    case OP_SUB:
-    case OP_MUL:
-    case OP_DIV:
-    case OP_MOD:
-    case OP_BITAND:
-    case OP_BITOR:
-    case OP_BITXOR:
-    case OP_SHL:
-    case OP_SHR: op_binary(m, in, s); break;
-    case OP_NEG:
-    case OP_BITNOT:
-    case OP_NOT: op_unary(m, in, s); break;
-    case OP_LT:
-    case OP_LE:
-    case OP_EQ:
-    case OP_NE: op_compare(m, in, s); break;
     case OP_MATMUL: op_matmul(m, in, s); break;
     case OP_JMP: return in->c;
     case OP_JZ:
@@ -536,7 +508,21 @@ static int step(block_machine *m, const insn *in, int pc, lanes s)
     case OP_STORE: op_index(m, in, s); break;
     case OP_EMIT: op_emit(m, in, s); break;
     case OP_HALT: FOR_LANES(s, i, stop_lane(m, i);); break;
+    default: break; /* arithmetic and comparisons: step */
     }
+    return pc + 1;
+}
+
+static int step(block_machine *m, const insn *in, int pc, lanes s)
+{
+    if (vm_is_binary(in->op))
+        op_binary(m, in, s);
+    else if (vm_is_unary(in->op))
+        op_unary(m, in, s);
+    else if (vm_is_compare(in->op))
+        op_compare(m, in, s);
+    else
+        return other_step(m, in, pc, s);
     return pc + 1;
 }
 

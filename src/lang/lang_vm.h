@@ -5,6 +5,12 @@
 
 #include "lang/lang_internal.h"
 
+/* The opcode families (contiguous in the opcode enum): a op b component-wise, op a, and the
+ * comparisons giving one bool. */
+static inline int vm_is_binary(int op) { return op >= OP_ADD && op <= OP_SHR; }
+static inline int vm_is_unary(int op) { return op >= OP_NEG && op <= OP_NOT; }
+static inline int vm_is_compare(int op) { return op >= OP_LT && op <= OP_NE; }
+
 /* Where domain errors and undefined integer operations of an element go (fn may be NULL). */
 typedef struct {
     sc_lang_domain_fn fn;
