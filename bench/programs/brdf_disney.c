@@ -122,7 +122,8 @@ static double unit_random(unsigned long long *s)
 /* A random unit vector, in the upper hemisphere (z >= 0) unless `sphere`. */
 static void direction(unsigned long long *s, int sphere, double *d)
 {
-    double z = sphere ? 2.0 * unit_random(s) - 1.0 : unit_random(s), phi = 6.283185307 * unit_random(s);
+    double z = sphere ? 2.0 * unit_random(s) - 1.0 : unit_random(s),
+           phi = 6.283185307 * unit_random(s);
     double r = sqrt(1.0 - z * z);
     d[0] = r * cos(phi), d[1] = r * sin(phi), d[2] = z;
 }
@@ -206,8 +207,9 @@ static void pass_c(void *p, long n)
 static void pass_block(void *p, long n)
 {
     context *c = p;
-    sc_lang_block job = {c->prec, n, (const double *const *)c->in,
-                         sc_program_values(c->prog) - 1, c->out, NULL, NULL};
+    sc_lang_block job = {
+        c->prec, n,   (const double *const *)c->in, sc_program_values(c->prog) - 1, c->out,
+        NULL,    NULL};
     sc_lang_error err;
     if (sc_program_run_block(c->prog, &job, &err) != n) {
         fprintf(stderr, "brdf_disney: %d:%d: %s\n", err.line, err.column, err.message);

@@ -77,8 +77,7 @@ static const char *position(char *buf, size_t size, int line, int column)
     return buf;
 }
 
-static void record_domain(domain_hits *h, int line, int column, const char *func,
-                          const char *rule)
+static void record_domain(domain_hits *h, int line, int column, const char *func, const char *rule)
 {
     for (int i = 0; i < h->n; i++)
         if (h->hit[i].line == line && h->hit[i].column == column &&
@@ -484,7 +483,8 @@ static int run_line(const char *src, const char *where, const define_set *d, con
     if (o->format == FMT_CSV && header->printed && !same_type(t, header->type)) {
         sc_error("%sa %s in csv under the header of a %s (the first line's type): give "
                  "expressions of one type, or several as arguments",
-                 where, sc_ltype_name(t, tb, sizeof tb), sc_ltype_name(header->type, hb, sizeof hb));
+                 where, sc_ltype_name(t, tb, sizeof tb),
+                 sc_ltype_name(header->type, hb, sizeof hb));
         status = SC_EXIT_USAGE;
     } else {
         status = evaluate(prog, d, o, where, &v, &ref);

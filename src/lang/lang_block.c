@@ -232,6 +232,13 @@ static void column_arithmetic(sc_prec p, int op, double *d, const double *a, con
         ARITHMETIC(ROUND_ANY)
 }
 
+static double integer_lane(const block_machine *m, const insn *in, int lane, double a, double b)
+{
+    lane_report l = {m, lane};
+    vm_report r = {forward_domain, &l};
+    return vm_integer_binary(in, m->bits, a, b, &r);
+}
+
 static void op_binary(block_machine *m, const insn *in, lanes s)
 {
     int sa = in->flags & BCAST_A ? 0 : 1, sb = in->flags & BCAST_B ? 0 : 1;
@@ -242,8 +249,7 @@ static void op_binary(block_machine *m, const insn *in, lanes s)
             column_arithmetic(m->p, in->op, d, a, b, s);
             continue;
         }
-        FOR_LANES(s, i, lane_report l = {m, i}; vm_report r = {forward_domain, &l};
-                  d[i] = vm_integer_binary(in, m->bits, a[i], b[i], &r););
+        FOR_LANES(s, i, d[i] = integer_lane(m, in, i, a[i], b[i]););
     }
 }
 
@@ -269,6 +275,15 @@ static void op_convert(block_machine *m, const insn *in, lanes s)
     }
 }
 
+/* Whether the n components of a and b are equal in lane i. */
+static int equal_lane(const block_machine *m, const insn *in, int lane)
+{
+    int equal = 1;
+    for (int k = 0; k < in->n; k++)
+        equal &= col(m, in->a + k)[lane] == col(m, in->b + k)[lane];
+    return equal;
+}
+
 static void op_compare(block_machine *m, const insn *in, lanes s)
 {
     double *d = col(m, in->dst);
@@ -280,9 +295,7 @@ static void op_compare(block_machine *m, const insn *in, lanes s)
     }
     /* == and != of whole values: every component of a lane is read before its result is
      * written (the result may overwrite an operand) */
-    FOR_LANES(s, i, int equal = 1; for (int k = 0; k < in->n; k++) equal &=
-                                   col(m, in->a + k)[i] == col(m, in->b + k)[i];
-              d[i] = in->op == OP_EQ ? equal : !equal;);
+    FOR_LANES(s, i, d[i] = (in->op == OP_EQ) == equal_lane(m, in, i););
 }
 
 /* memmove of n registers for the lanes of s. */
@@ -314,17 +327,35 @@ static void scatter(block_machine *m, int reg, int n, int lane, const double *v)
         col(m, reg + k)[lane] = v[k];
 }
 
+static void matmul_lane(block_machine *m, const insn *in, const int *dims, int lane)
+{
+    double a[16], b[16], out[16];
+    gather(m, in->a, dims[0] * dims[1], lane, a);
+    gather(m, in->b, dims[1] * dims[2], lane, b);
+    vm_matmul(m->p, dims, a, b, out);
+    scatter(m, in->dst, dims[0] * dims[2], lane, out);
+}
+
 static void op_matmul(block_machine *m, const insn *in, lanes s)
 {
     const int *dims = m->prog->aux + in->c;
-    FOR_LANES(s, i, double a[16]; double b[16]; double out[16];
-              gather(m, in->a, dims[0] * dims[1], i, a); gather(m, in->b, dims[1] * dims[2], i, b);
-              vm_matmul(m->p, dims, a, b, out); scatter(m, in->dst, dims[0] * dims[2], i, out););
+    FOR_LANES(s, i, matmul_lane(m, in, dims, i););
 }
 
 /* ---- built-ins ---- */
 
 static int overlaps(int a, int na, int b, int nb) { return a < b + nb && b < a + na; }
+
+/* Reports lane i's arguments (from the columns c) if they are outside the built-in's domain. */
+static void check_domain(const block_machine *m, const insn *in, const sc_builtin_scalar *f,
+                         const char *name, const double *const *c, int lane)
+{
+    double a[3] = {c[0][lane], c[1] ? c[1][lane] : 0, c[2] ? c[2][lane] : 0};
+    const char *rule = f->domain(a);
+    lane_report l = {m, lane};
+    if (rule)
+        forward_domain(&l, in->line, in->column, name, rule);
+}
 
 /* A component-wise float built-in: its scalar function over each component's column. */
 static void builtin_columns(block_machine *m, const insn *in, const builtin_call *call,
@@ -338,9 +369,7 @@ static void builtin_columns(block_machine *m, const insn *in, const builtin_call
             c[j] = col(m, call->args[j] + (sc_lt_is_scalar(call->types[j]) ? 0 : k));
         double *d = col(m, in->dst + k);
         if (f->domain)
-            FOR_LANES(s, i, double a[3] = {c[0][i], c[1] ? c[1][i] : 0, c[2] ? c[2][i] : 0};
-                      const char *rule = f->domain(a); lane_report l = {m, i};
-                      if (rule) forward_domain(&l, in->line, in->column, name, rule););
+            FOR_LANES(s, i, check_domain(m, in, f, name, c, i););
         if (f->f1)
             FOR_LANES(s, i, d[i] = f->f1(p, c[0][i]););
         else if (f->f2)
@@ -351,16 +380,23 @@ static void builtin_columns(block_machine *m, const insn *in, const builtin_call
 }
 
 /* Any built-in, one lane at a time through the interpreter's element function. */
+static void builtin_lane(block_machine *m, const insn *in, const builtin_call *call, int lane)
+{
+    double args[4][16], out[16];
+    const double *pa[4];
+    for (int j = 0; j < call->n_args; j++) {
+        gather(m, call->args[j], size_of(call->types[j]), lane, args[j]);
+        pa[j] = args[j];
+    }
+    lane_report l = {m, lane};
+    vm_report r = {forward_domain, &l};
+    vm_builtin(m->p, call, in, pa, out, &r);
+    scatter(m, in->dst, size_of(call->result), lane, out);
+}
+
 static void builtin_lanes(block_machine *m, const insn *in, const builtin_call *call, lanes s)
 {
-    int n = size_of(call->result);
-    FOR_LANES(s, i, double args[4][16]; const double *pa[4]; double out[16];
-              for (int j = 0; j < call->n_args; j++) {
-                  gather(m, call->args[j], size_of(call->types[j]), i, args[j]);
-                  pa[j] = args[j];
-              } lane_report l = {m, i};
-              vm_report r = {forward_domain, &l}; vm_builtin(m->p, call, in, pa, out, &r);
-              scatter(m, in->dst, n, i, out););
+    FOR_LANES(s, i, builtin_lane(m, in, call, i););
 }
 
 /* Column d = dot of the n components from registers a and b, rounded as sc_p_dot rounds it
@@ -414,19 +450,26 @@ static void op_builtin(block_machine *m, const insn *in, lanes s)
 
 /* ---- indexing, values ---- */
 
+static void index_lane(block_machine *m, const insn *in, double index, int lane)
+{
+    long long offset;
+    sc_lang_error e;
+    if (vm_index(in, index, &offset, &e) < 0) {
+        fail_lane(m, lane, &e);
+        return;
+    }
+    for (int k = 0; k < in->n; k++) {
+        if (in->op == OP_LOAD)
+            col(m, in->dst + k)[lane] = col(m, in->a + (int)offset + k)[lane];
+        else
+            col(m, in->dst + (int)offset + k)[lane] = col(m, in->a + k)[lane];
+    }
+}
+
 static void op_index(block_machine *m, const insn *in, lanes s)
 {
     const double *index = col(m, in->b);
-    FOR_LANES(s, i, long long offset; sc_lang_error e;
-              if (vm_index(in, index[i], &offset, &e) < 0) {
-                  fail_lane(m, i, &e);
-                  continue;
-              } for (int k = 0; k < in->n; k++) {
-                  if (in->op == OP_LOAD)
-                      col(m, in->dst + k)[i] = col(m, in->a + (int)offset + k)[i];
-                  else
-                      col(m, in->dst + (int)offset + k)[i] = col(m, in->a + k)[i];
-              });
+    FOR_LANES(s, i, index_lane(m, in, index[i], i););
 }
 
 static void op_emit(block_machine *m, const insn *in, lanes s)
@@ -453,31 +496,43 @@ static int branch(block_machine *m, const insn *in, int pc, lanes s)
     return DIVERGED;
 }
 
-static void count_iteration(block_machine *m, const insn *in, lanes s)
+static void iteration_lane(block_machine *m, const insn *in, int lane)
 {
     long bound = m->prog->max_iterations;
-    FOR_LANES(s, i, if (++m->iterations[i] > bound) {
-        sc_lang_error e;
-        vm_too_many_iterations(in, bound, &e);
-        fail_lane(m, i, &e);
-    });
+    if (++m->iterations[lane] <= bound)
+        return;
+    sc_lang_error e;
+    vm_too_many_iterations(in, bound, &e);
+    fail_lane(m, lane, &e);
+}
+
+static void count_iteration(block_machine *m, const insn *in, lanes s)
+{
+    FOR_LANES(s, i, iteration_lane(m, in, i););
+}
+
+static void call_lane(block_machine *m, const insn *in, int pc, int lane)
+{
+    if (m->sps[lane] <= m->prog->max_call_depth) {
+        m->stack[lane * m->depth + m->sps[lane]++] = pc + 1;
+        return;
+    }
+    sc_lang_error e;
+    vm_too_deep(in, m->sps[lane], &e);
+    fail_lane(m, lane, &e);
 }
 
 static int call(block_machine *m, const insn *in, int pc, lanes s)
 {
-    FOR_LANES(s, i, if (m->sps[i] > m->prog->max_call_depth) {
-        sc_lang_error e;
-        vm_too_deep(in, m->sps[i], &e);
-        fail_lane(m, i, &e);
-    } else m->stack[i * m->depth + m->sps[i]++] = pc + 1;);
+    FOR_LANES(s, i, call_lane(m, in, pc, i););
     return in->c;
 }
 
 static int ret(block_machine *m, lanes s)
 {
-    int first = -1, same = 1;
-    FOR_LANES(s, i, m->pcs[i] = m->stack[i * m->depth + --m->sps[i]];
-              same &= first < 0 || m->pcs[i] == first; first = m->pcs[i];);
+    FOR_LANES(s, i, m->pcs[i] = m->stack[i * m->depth + --m->sps[i]];);
+    int first = m->pcs[s.idx ? s.idx[0] : 0], same = 1;
+    FOR_LANES(s, i, same &= m->pcs[i] == first;);
     return same ? first : DIVERGED;
 }
 
@@ -761,9 +816,14 @@ long sc_program_run_block(const sc_program *prog, const sc_lang_block *job, sc_l
     }
     if (!knows_every_opcode(prog))
         return run_each(prog, job, err);
-    block_machine m = {.prog = prog, .job = job, .p = job->prec, .bits = sc_int_bits(job->prec),
-                       .cap = lanes_for(prog, job->n), .depth = prog->max_call_depth + 1,
-                       .failed = job->n, .err = err};
+    block_machine m = {.prog = prog,
+                       .job = job,
+                       .p = job->prec,
+                       .bits = sc_int_bits(job->prec),
+                       .cap = lanes_for(prog, job->n),
+                       .depth = prog->max_call_depth + 1,
+                       .failed = job->n,
+                       .err = err};
     if (allocate(&m) < 0) {
         release(&m);
         snprintf(err->message, sizeof err->message, "out of memory");

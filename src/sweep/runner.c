@@ -61,8 +61,8 @@ static int eval_rows(const runner *r, int worker, uint64_t first, int count, slo
     for (int i = 0; i < count; i++) {
         double *vars = s->vars + (size_t)i * (size_t)r->n_vars;
         sc_sweep_grid_point(job->grid, first + (uint64_t)i, vars);
-        if (job->eval(job->user, worker, vars, s->results + (size_t)i * (size_t)job->n_results,
-                      msg, size) < 0)
+        if (job->eval(job->user, worker, vars, s->results + (size_t)i * (size_t)job->n_results, msg,
+                      size) < 0)
             return i;
     }
     return count;

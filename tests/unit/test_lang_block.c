@@ -339,16 +339,19 @@ static const char *const divergent[] = {
     "float y; if (x < v.y) { y = pow(x, v.z); } else { y = inversesqrt(v.x) + x; } y",
     /* loops whose trip count depends on the element, break and continue */
     "int n = int(clamp(abs(x) * 3.0, 0.0, 20.0)); float s = 0.0;\n"
-    "for (int i = 0; i < n; i++) { if (i == 7) continue; s += float(i) * v.x; if (s > 9.0) break; }\n"
+    "for (int i = 0; i < n; i++) { if (i == 7) continue; s += float(i) * v.x; if (s > 9.0) break; "
+    "}\n"
     "s",
-    "int k = 0; float t = abs(x) + 1.0; while (t > 1.0 && k < 40) { t *= 0.7; k++; } ivec2(k, k * k)",
+    "int k = 0; float t = abs(x) + 1.0; while (t > 1.0 && k < 40) { t *= 0.7; k++; } ivec2(k, k * "
+    "k)",
     "int k = int(abs(x)); do { k -= 3; } while (k > 0); k",
     /* early return, calls from several sites, out parameters */
     "float f(float a) { if (a < 0.0) return -1.0; float s = a; for (int i = 0; i < int(a); i++) "
     "s = s * 0.5 + 1.0; return s; }\n"
     "float g(float a, out float b) { b = a * 2.0; if (a > 1.0) return f(a); return f(-a) + b; }\n"
     "float b; float r = x > 0.5 ? g(x, b) : f(v.z); vec2(r, b)",
-    "void split(float a, out int w, out float r) { if (a > 0.0) { w = int(a); r = a - float(w); } }\n"
+    "void split(float a, out int w, out float r) { if (a > 0.0) { w = int(a); r = a - float(w); } "
+    "}\n"
     "int w; float r; split(x, w, r); split(v.y, w, r); vec2(float(w), r)",
     /* integers: division by zero, shifts past the width and wrapping in some elements */
     "int a = int(x * 1000.0), b = int(v.x); ivec4(a / b, a % (b + 1), a << b, a >> (b & 40))",
@@ -385,8 +388,9 @@ static void test_disney(void **state)
     char *brdf = read_file("bench/programs/disney.glsl");
     char *src = malloc(strlen(brdf) + 128);
     assert_non_null(src);
-    sprintf(src, "%s\nBRDF(normalize(L), normalize(V), vec3(0, 0, 1), vec3(1, 0, 0), "
-                 "vec3(0, 1, 0))\n",
+    sprintf(src,
+            "%s\nBRDF(normalize(L), normalize(V), vec3(0, 0, 1), vec3(1, 0, 0), "
+            "vec3(0, 1, 0))\n",
             brdf);
     sc_lang_input decl[2] = {{"L", {SC_KIND_FLOAT, 1, 3}}, {"V", {SC_KIND_FLOAT, 1, 3}}};
     input_set in = random_inputs(MAX_ELEMENTS);
@@ -401,9 +405,8 @@ static void test_disney(void **state)
 static void test_edges(void **state)
 {
     (void)state;
-    sc_lang_input decl[3] = {{"i", {SC_KIND_INT, 1, 1}},
-                             {"b", {SC_KIND_BOOL, 1, 1}},
-                             {"u", {SC_KIND_UINT, 1, 2}}};
+    sc_lang_input decl[3] = {
+        {"i", {SC_KIND_INT, 1, 1}}, {"b", {SC_KIND_BOOL, 1, 1}}, {"u", {SC_KIND_UINT, 1, 2}}};
     input_set in = random_inputs(MAX_ELEMENTS);
     for (long e = 0; e < in.n; e++)
         columns_store[0][e] *= 1e9; /* beyond 32 bits: wrapped */
