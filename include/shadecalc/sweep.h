@@ -125,7 +125,7 @@ typedef struct {
     /* optional: rows done so far, after each block */
     void (*progress)(void *user, uint64_t done, uint64_t total);
     int threads; /* >= 1 */
-    /* optional, used instead of eval: `count` rows at once, their variables in vars (row after
+    /* optional, used instead of eval (which may then be NULL): `count` rows at once, their variables in vars (row after
      * row, grid->n each) and their results in results (n_results each); returns count, or the
      * index in the block of the first row that failed, with a message in err (the rows before
      * it are written) */

@@ -448,7 +448,7 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
     job_context ctx = {plan, pictures, &bar};
     sc_sweep_job job = {g,
                         plan->n_results,
-                        job_eval,
+                        plan->eval ? job_eval : NULL,
                         &ctx,
                         o->pictures.plot || o->pictures.image || o->pictures.heatmap ? job_consume
                                                                                      : NULL,

@@ -55,9 +55,8 @@ static long eval_chunk(const expr_plan *e, int worker, int count, const double *
     }
     for (int k = 0; k < e->n_results; k++)
         out_cols[k] = out[k];
-    sc_lang_block job = {e->prec,  count,         in_cols,
-                         e->value, out_cols,      record_domain,
-                         &e->tally[worker]};
+    sc_lang_block job = {e->prec,  count,         in_cols,          e->value,
+                         out_cols, record_domain, &e->tally[worker]};
     long done = sc_program_run_block(e->prog, &job, err);
     for (long i = 0; i < done; i++)
         for (int k = 0; k < e->n_results; k++)
@@ -80,12 +79,6 @@ static int eval_rows(void *user, int worker, int count, const double *vars, doub
         }
     }
     return count;
-}
-
-static int eval_row(void *user, int worker, const double *vars, double *results, char *err,
-                    size_t errsize)
-{
-    return eval_rows(user, worker, 1, vars, results, err, errsize) == 1 ? 0 : -1;
 }
 
 static void report(void *user)
@@ -184,7 +177,6 @@ int sweep_expr_plan(const char *src, const sc_sweep_grid *g, sc_prec p, int thre
         plan->columns[k] = e->names[k];
     for (int k = 0; k < g->n; k++)
         plan->unused |= (unsigned)!mentions(src, g->var[k].name) << k;
-    plan->eval = eval_row;
     plan->eval_block = eval_rows;
     plan->user = e;
     plan->report = report;
