@@ -33,6 +33,12 @@
 #pragma GCC optimize("vect-cost-model=cheap")
 #endif
 
+/* The opcodes this file runs are those of lang_internal.h up to OP_HALT, numbered as below. A
+ * program with an opcode added after OP_HALT runs one element at a time (run_each); an opcode
+ * inserted before it must be taught to this file first. */
+_Static_assert(OP_SHR == 11 && OP_NOT == 14 && OP_NE == 18 && OP_HALT == 31,
+               "lang_block.c: teach the block interpreter the new opcodes");
+
 /* Lanes per block: at most MAX_LANES, and the registers of a block within REGISTER_BUDGET
  * doubles (2 MiB), so that they stay in the cache. */
 enum { MAX_LANES = 256, REGISTER_BUDGET = 1 << 18, DIVERGED = -1 };
