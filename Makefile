@@ -269,6 +269,12 @@ accuracy: all
 bench-sweep: all
 	$(BUILD)/bench/sweep_vs_awk $(BIN) $(BENCH_SWEEP_ARGS)
 
+# The Disney BRDF in GLSL (bench/programs/disney.glsl) by block execution against the same code
+# in C at -O2 and the built-in cook-torrance GGX, ns per evaluation on one thread.
+.PHONY: bench-brdf
+bench-brdf: all
+	$(BUILD)/bench/brdf_disney bench/programs/disney.glsl $(BENCH_BRDF_ARGS)
+
 # ---- correct rounding over every binary32 input (tests/exhaustive/, MPFR) ------------------
 # Not part of check: about 1.5 hours of CPU (EXHAUSTIVE_ARGS="--stride 257" for a sample).
 # check runs the same checker on a sample (tests/unit/test_exhaustive.c).

@@ -41,7 +41,7 @@ static int sweep_rows(long rows, int threads)
         return 1;
     static const char *const names[] = {"x", "value"};
     sc_sweep_table table = {SC_SWEEP_CSV, SC_HIGHP, names, 1, 1};
-    sc_sweep_job job = {&g, 1, eval_row, expr, NULL, &table, out, NULL, threads};
+    sc_sweep_job job = {&g, 1, eval_row, expr, NULL, &table, out, NULL, threads, NULL};
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     int status = sc_sweep_run(&job, err, sizeof err) == SC_SWEEP_OK ? 0 : 1;

@@ -11,7 +11,8 @@
  *   sc_expr_result_type      type of the final expression
  *   sc_expr_free
  *
- * The language (the man page's EVAL GRAMMAR): float literals (`1`, `1.`, `.5`, `1e-3`),
+ * The float expression language of user surfaces (the man page's NORMAL, Surfaces; `eval` and
+ * `sweep` use the GLSL ES language of shadecalc/lang.h): float literals (`1`, `1.`, `.5`, `1e-3`),
  * constructors `float vec2 vec3 vec4 mat2 mat3 mat4` with GLSL's rules, swizzles
  * (`.xyzw .rgba .stpq`), indexing by an integer literal (`m[1]`, `v[0]`), unary `- +`, binary
  * `+ - * /` with GLSL's component-wise, scalar-vector, matrix×vector and matrix×matrix rules,

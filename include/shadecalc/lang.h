@@ -12,6 +12,11 @@
  *   sc_program_run          runs the top-level code in source order; each top-level expression
  *                           statement's value goes to a callback
  *   sc_program_free
+ *   sc_program_values       the number of top-level expression statements (the values a run
+ *                           emits), sc_program_value_type the type of one
+ *   sc_program_run_block    runs the top-level code for n elements at once (structure of
+ *                           arrays: each input component a column of n doubles), one value's
+ *                           components written as columns
  *
  * The language is described in the man page (EVAL FILES): declarations, `const`, blocks,
  * if/else, for/while/do with break/continue, switch, functions with in/out/inout parameters,
@@ -101,6 +106,44 @@ typedef void (*sc_lang_domain_fn)(void *user, int line, int column, const char *
  * memory) with *err filled; 1 if emit asked to stop. */
 int sc_program_run(const sc_program *prog, sc_prec p, const sc_lvalue *inputs, sc_lang_emit_fn emit,
                    sc_lang_domain_fn on_domain, void *user, sc_lang_error *err);
+
+/* ---- block execution ----
+ *
+ * sc_program_run_block runs the program for n sets of inputs and gives the value of one of its
+ * top-level expression statements for each, bit for bit what sc_program_run gives for each set
+ * alone (the same rounding of every operation in every precision, the same domain reports per
+ * element, the same runtime errors). Inside, the elements run in blocks: every register is a
+ * column of up to a few hundred elements, each instruction is dispatched once per block and
+ * loops over the elements. Control flow that differs between elements (if/else, loops whose trip
+ * count depends on the element, an early return) runs under an execution mask: each element has
+ * its own instruction address, the elements at the lowest address run the next instruction
+ * together, and elements that waited (after a branch or a loop) join again at the same address;
+ * the block runs unmasked (all elements at one address) whenever it can. */
+
+int sc_program_values(const sc_program *prog);
+sc_ltype sc_program_value_type(const sc_program *prog, int value);
+
+/* A domain error or undefined integer operation of element `element` (0..n-1). */
+typedef void (*sc_lang_block_domain_fn)(void *user, long element, int line, int column,
+                                        const char *func, const char *rule);
+
+typedef struct {
+    sc_prec prec;
+    long n; /* elements */
+    /* One column of n values per component of each input, in the order of the inputs given to
+     * sc_program_compile (input 0's components, then input 1's, ...): element e's value of that
+     * component is inputs[c][e], rounded or wrapped as sc_program_run rounds its inputs. */
+    const double *const *inputs;
+    int value;          /* which top-level expression statement, 0 .. sc_program_values() - 1 */
+    double *const *out; /* one column of n per component of that value's type */
+    sc_lang_block_domain_fn on_domain; /* may be NULL */
+    void *user;
+} sc_lang_block;
+
+/* Runs the elements; returns n when every one ran, else the lowest index of an element that
+ * stopped with a runtime error (*err filled for it; line 0 for out of memory). The outputs of
+ * the elements that ran are written, also after a failing one. */
+long sc_program_run_block(const sc_program *prog, const sc_lang_block *block, sc_lang_error *err);
 
 SC_END_DECLS
 

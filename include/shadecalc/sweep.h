@@ -125,6 +125,12 @@ typedef struct {
     /* optional: rows done so far, after each block */
     void (*progress)(void *user, uint64_t done, uint64_t total);
     int threads; /* >= 1 */
+    /* optional, used instead of eval (which may then be NULL): `count` rows at once, their variables in vars (row after
+     * row, grid->n each) and their results in results (n_results each); returns count, or the
+     * index in the block of the first row that failed, with a message in err (the rows before
+     * it are written) */
+    int (*eval_block)(void *user, int worker, int count, const double *vars, double *results,
+                      char *err, size_t errsize);
 } sc_sweep_job;
 
 typedef enum {

@@ -1,5 +1,6 @@
 /* shadecalc eval — GLSL ES expressions evaluated from the shell in a chosen precision. */
 #include <getopt.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -8,7 +9,6 @@
 #include "cli/cli.h"
 #include "cli/eval_file.h"
 #include "cli/line_reader.h"
-#include "shadecalc/expr.h"
 
 enum { MAX_DEFINES = 32, MAX_HITS = 8 };
 
@@ -20,23 +20,19 @@ typedef struct {
     long max_iterations; /* --max-iterations */
 } eval_options;
 
-/* -D NAME=EXPR: its value in the chosen precision and in the double reference. */
+/* -D NAME=EXPR: a read-only variable with its value in the chosen precision and in the double
+ * reference. */
 typedef struct {
-    char name[64];
-    sc_value value, reference;
-} define;
-
-typedef struct {
-    define defs[MAX_DEFINES];
-    sc_expr_input inputs[MAX_DEFINES];
-    sc_value values[MAX_DEFINES], references[MAX_DEFINES];
+    char names[MAX_DEFINES][64];
+    sc_lang_input inputs[MAX_DEFINES];
+    sc_lvalue values[MAX_DEFINES], references[MAX_DEFINES];
     int n;
 } define_set;
 
-/* The domain errors of one evaluation, each (column, rule) once. */
+/* The domain errors of one evaluation, each (line, column, rule) once. */
 typedef struct {
     struct {
-        int column;
+        int line, column;
         const char *func, *rule;
     } hit[MAX_HITS];
     int n;
@@ -48,20 +44,22 @@ static void usage(FILE *out)
             "usage: shadecalc eval [OPTIONS] EXPR...\n"
             "       shadecalc eval [OPTIONS] --file F\n"
             "\n"
-            "Evaluates GLSL ES expressions (one result line each; with no EXPR, one expression\n"
-            "per line of standard input). Statements 'NAME = EXPR;' may precede the expression.\n"
+            "Evaluates GLSL ES 3.00 expressions (one result line each; with no EXPR, one\n"
+            "expression per line of standard input). Declarations and statements may precede\n"
+            "the expression ('float a = 2.0; a * a'); GLSL ES converts nothing implicitly\n"
+            "('1.0 + 1' is an error: write '1.0 + 1.0' or '1.0 + float(1)').\n"
             "\n"
             "  -p, --precision P   double|highp|mediump|lowp (default highp)\n"
             "  -f, --format F      glsl|csv|jsonl (default glsl; jsonl: JSON Lines, one\n"
             "                      object per line, also called json; csv: an expression\n"
             "                      column, then the components)\n"
-            "  -D, --define N=EXPR define variable N for every expression (repeatable)\n"
+            "  -D, --define N=EXPR define read-only variable N for every expression (repeatable)\n"
             "      --hex           print bit patterns of the precision instead of decimals\n"
             "      --ulp           also print the error against the double reference, in ULP\n"
             "      --strict        an argument outside a built-in's GLSL ES domain is an error\n"
             "      --file F        run the GLSL ES program in file F ('-': standard input),\n"
             "                      printing each top-level expression statement's value\n"
-            "      --max-iterations N  loop iterations a --file run may execute (10000000)\n"
+            "      --max-iterations N  loop iterations a run may execute (10000000)\n"
             "  -h, --help          this help\n"
             "\n"
             "example: shadecalc eval 'normalize(vec3(3,0,4))'   ->   vec3(0.6, 0, 0.8)\n");
@@ -69,13 +67,24 @@ static void usage(FILE *out)
 
 /* ---- domain reporting ---- */
 
-static void record_domain(void *user, int column, const char *func, const char *rule)
+/* "column C" of a one-line expression, "line L, column C" when it spans lines. */
+static const char *position(char *buf, size_t size, int line, int column)
 {
-    domain_hits *h = user;
+    if (line > 1)
+        snprintf(buf, size, "line %d, column %d", line, column);
+    else
+        snprintf(buf, size, "column %d", column);
+    return buf;
+}
+
+static void record_domain(domain_hits *h, int line, int column, const char *func, const char *rule)
+{
     for (int i = 0; i < h->n; i++)
-        if (h->hit[i].column == column && strcmp(h->hit[i].rule, rule) == 0)
+        if (h->hit[i].line == line && h->hit[i].column == column &&
+            strcmp(h->hit[i].rule, rule) == 0)
             return;
     if (h->n < MAX_HITS) {
+        h->hit[h->n].line = line;
         h->hit[h->n].column = column;
         h->hit[h->n].func = func;
         h->hit[h->n].rule = rule;
@@ -86,38 +95,88 @@ static void record_domain(void *user, int column, const char *func, const char *
 /* Prints the domain errors; returns 1 if they are fatal (--strict). */
 static int report_domain(const domain_hits *h, const char *where, int strict)
 {
+    char pos[48], at[160];
     for (int i = 0; i < h->n; i++) {
-        if (strict)
-            sc_error("%scolumn %d: %s: %s is outside the GLSL ES domain (--strict)", where,
-                     h->hit[i].column, h->hit[i].func, h->hit[i].rule);
-        else
-            sc_warning("%scolumn %d: %s: %s is outside the GLSL ES domain; the result is the "
-                       "IEEE value of its formula",
-                       where, h->hit[i].column, h->hit[i].func, h->hit[i].rule);
+        snprintf(at, sizeof at, "%s%s", where,
+                 position(pos, sizeof pos, h->hit[i].line, h->hit[i].column));
+        sc_report_domain_hit(at, h->hit[i].func, h->hit[i].rule, strict);
     }
     return strict && h->n > 0;
 }
 
 /* ---- evaluation ---- */
 
-/* Compiles src against the defines; prints the error (prefixed with `where`) on failure. */
-static sc_expr *compile(const char *src, const define_set *d, const char *where)
+/* Compiles src (declarations and statements, then the expression) against the defines; prints
+ * the error (prefixed with `where`) on failure. */
+static sc_program *compile(const char *src, const define_set *d, const eval_options *o,
+                           const char *where)
 {
-    sc_expr_error err;
-    sc_expr *e = sc_expr_compile(src, d->inputs, d->n, &err);
-    if (!e)
-        sc_error("%scolumn %d: %s", where, err.column, err.message);
-    return e;
+    sc_lang_options options = {o->max_iterations, 0, 0};
+    sc_lang_error err;
+    char at[48];
+    sc_program *prog = sc_program_compile(src, d->inputs, d->n, &options, &err);
+    if (!prog) {
+        sc_error("%s%s: %s", where, position(at, sizeof at, err.line, err.column), err.message);
+        return NULL;
+    }
+    if (sc_program_values(prog) == 0) {
+        sc_error("%sno expression to evaluate (the last statement must be an expression)", where);
+        sc_program_free(prog);
+        return NULL;
+    }
+    return prog;
 }
 
-/* Evaluates e in the chosen precision (and in double when --ulp); status as the command's. */
-static int evaluate(const sc_expr *e, const define_set *d, const eval_options *o, const char *where,
-                    sc_value *value, sc_value *reference)
+/* The type of what an expression prints: its last expression statement. */
+static sc_ltype result_type(const sc_program *prog)
+{
+    return sc_program_value_type(prog, sc_program_values(prog) - 1);
+}
+
+typedef struct {
+    sc_lvalue *value;
+    domain_hits *hits; /* NULL: not recorded */
+} one_run;
+
+static int keep_value(void *user, const char *text, int len, int line, const sc_lvalue *v)
+{
+    const one_run *run = user;
+    (void)text, (void)len, (void)line;
+    *run->value = *v; /* the last one stays */
+    return 0;
+}
+
+static void keep_domain(void *user, int line, int column, const char *func, const char *rule)
+{
+    const one_run *run = user;
+    if (run->hits)
+        record_domain(run->hits, line, column, func, rule);
+}
+
+/* One run in precision p; prints a runtime error. Status as the command's. */
+static int run_once(const sc_program *prog, sc_prec p, const sc_lvalue *inputs, sc_lvalue *value,
+                    domain_hits *hits, const char *where)
+{
+    one_run run = {value, hits};
+    sc_lang_error err;
+    char at[48];
+    if (sc_program_run(prog, p, inputs, keep_value, keep_domain, &run, &err) < 0) {
+        sc_error("%s%s: %s", where, position(at, sizeof at, err.line, err.column), err.message);
+        return SC_EXIT_RUNTIME;
+    }
+    return SC_EXIT_OK;
+}
+
+/* Evaluates prog in the chosen precision (and in double when --ulp); status as the command's. */
+static int evaluate(const sc_program *prog, const define_set *d, const eval_options *o,
+                    const char *where, sc_lvalue *value, sc_lvalue *reference)
 {
     domain_hits hits = {.n = 0};
-    *value = sc_expr_eval(e, o->prec, d->values, record_domain, &hits);
-    if (o->ulp)
-        *reference = sc_expr_eval(e, SC_DOUBLE, d->references, NULL, NULL);
+    int status = run_once(prog, o->prec, d->values, value, &hits, where);
+    if (status == SC_EXIT_OK && o->ulp)
+        status = run_once(prog, SC_DOUBLE, d->references, reference, NULL, where);
+    if (status != SC_EXIT_OK)
+        return status;
     return report_domain(&hits, where, o->strict) ? SC_EXIT_RUNTIME : SC_EXIT_OK;
 }
 
@@ -125,7 +184,7 @@ static int add_define(define_set *d, const char *arg, const eval_options *o)
 {
     const char *eq = strchr(arg, '=');
     size_t len = eq ? (size_t)(eq - arg) : 0;
-    if (!eq || len == 0 || len >= sizeof d->defs[0].name) {
+    if (!eq || len == 0 || len >= sizeof d->names[0]) {
         sc_error("eval: -D '%s': expected NAME=EXPR", arg);
         return SC_EXIT_USAGE;
     }
@@ -135,17 +194,16 @@ static int add_define(define_set *d, const char *arg, const eval_options *o)
     }
     char where[96];
     snprintf(where, sizeof where, "-D '%.*s': ", (int)len, arg);
-    sc_expr *e = compile(eq + 1, d, where);
-    if (!e)
+    sc_program *prog = compile(eq + 1, d, o, where);
+    if (!prog)
         return SC_EXIT_USAGE;
-    define *def = &d->defs[d->n];
-    memcpy(def->name, arg, len);
-    def->name[len] = '\0';
+    memcpy(d->names[d->n], arg, len);
+    d->names[d->n][len] = '\0';
     eval_options both = *o;
     both.ulp = 1;
-    int status = evaluate(e, d, &both, where, &d->values[d->n], &d->references[d->n]);
-    d->inputs[d->n] = (sc_expr_input){def->name, sc_expr_result_type(e)};
-    sc_expr_free(e);
+    int status = evaluate(prog, d, &both, where, &d->values[d->n], &d->references[d->n]);
+    d->inputs[d->n] = (sc_lang_input){d->names[d->n], result_type(prog)};
+    sc_program_free(prog);
     if (status == SC_EXIT_OK)
         d->n++;
     return status;
@@ -153,33 +211,42 @@ static int add_define(define_set *d, const char *arg, const eval_options *o)
 
 /* ---- output ---- */
 
-static void print_number(FILE *out, double x, const eval_options *o, int json)
+static int same_type(sc_ltype a, sc_ltype b)
 {
-    sc_print_float(out, x, o->prec, o->hex, json);
+    return a.kind == b.kind && a.cols == b.cols && a.rows == b.rows;
 }
 
-static double ulp_of(const eval_options *o, const sc_value *v, const sc_value *ref, int k)
+static void print_component(FILE *out, const sc_lvalue *v, int k, const eval_options *o, int json)
 {
+    sc_print_component(out, v->v[k], (sc_kind)v->type.kind, o->prec, o->hex, json);
+}
+
+/* The error in ULPs of the precision for a float; for an integer or bool, |value - reference|. */
+static double ulp_of(const eval_options *o, const sc_lvalue *v, const sc_lvalue *ref, int k)
+{
+    if (v->type.kind != SC_KIND_FLOAT)
+        return fabs(v->v[k] - ref->v[k]);
     return sc_ulp_error(o->prec, v->v[k], ref->v[k]);
 }
 
-static void print_ulps(FILE *out, const sc_value *v, const sc_value *ref, const eval_options *o,
+static void print_ulps(FILE *out, const sc_lvalue *v, const sc_lvalue *ref, const eval_options *o,
                        const char *sep)
 {
-    for (int k = 0; k < sc_type_size(v->type); k++)
+    for (int k = 0; k < sc_ltype_size(v->type); k++)
         fprintf(out, "%s%.3g", k ? sep : "", ulp_of(o, v, ref, k));
 }
 
-static void print_glsl(FILE *out, const sc_value *v, const sc_value *ref, const eval_options *o)
+static void print_glsl(FILE *out, const sc_lvalue *v, const sc_lvalue *ref, const eval_options *o)
 {
-    int n = sc_type_size(v->type);
-    if (v->type != SC_FLOAT)
-        fprintf(out, "%s(", sc_type_name(v->type));
+    char tb[16];
+    int n = sc_ltype_size(v->type);
+    if (n > 1)
+        fprintf(out, "%s(", sc_ltype_name(v->type, tb, sizeof tb));
     for (int k = 0; k < n; k++) {
         fputs(k ? ", " : "", out);
-        print_number(out, v->v[k], o, 0);
+        print_component(out, v, k, o, 0);
     }
-    fputs(v->type != SC_FLOAT ? ")" : "", out);
+    fputs(n > 1 ? ")" : "", out);
     if (o->ulp) {
         fputs("  # ulp: ", out);
         print_ulps(out, v, ref, o, ", ");
@@ -187,18 +254,19 @@ static void print_glsl(FILE *out, const sc_value *v, const sc_value *ref, const 
     fputc('\n', out);
 }
 
-static void print_json(FILE *out, const char *src, const sc_value *v, const sc_value *ref,
+static void print_json(FILE *out, const char *src, const sc_lvalue *v, const sc_lvalue *ref,
                        const eval_options *o)
 {
-    int n = sc_type_size(v->type);
+    char tb[16];
+    int n = sc_ltype_size(v->type);
     fputs("{\"expression\": ", out);
     sc_print_json_string(out, src);
     fprintf(out, ", \"precision\": \"%s\", \"type\": \"%s\", \"%s\": ", sc_prec_name(o->prec),
-            sc_type_name(v->type), o->hex ? "bits" : "value");
+            sc_ltype_name(v->type, tb, sizeof tb), o->hex ? "bits" : "value");
     fputs(n > 1 ? "[" : "", out);
     for (int k = 0; k < n; k++) {
         fputs(k ? ", " : "", out);
-        print_number(out, v->v[k], o, 1);
+        print_component(out, v, k, o, 1);
     }
     fputs(n > 1 ? "]" : "", out);
     if (o->ulp) {
@@ -209,37 +277,25 @@ static void print_json(FILE *out, const char *src, const sc_value *v, const sc_v
     fputs("}\n", out);
 }
 
-/* CSV column k of a value of type t: value | x y z w | c0r0 c0r1 ... (column-major). */
-static void csv_column_name(FILE *out, sc_type t, int k)
-{
-    int n = sc_type_matrix_n(t);
-    if (t == SC_FLOAT)
-        fputs("value", out);
-    else if (n)
-        fprintf(out, "c%dr%d", k / n, k % n);
-    else
-        fputc("xyzw"[k], out);
-}
-
 /* One header for all rows: the expression, then named components when every result has the
  * same type, else `type,c0..cN` padded with empty fields. */
-static void print_csv_header(FILE *out, const sc_type *types, int count, const eval_options *o)
+static void print_csv_header(FILE *out, const sc_ltype *types, int count, const eval_options *o)
 {
     int mixed = 0, width = 0;
     for (int i = 0; i < count; i++) {
-        mixed |= types[i] != types[0];
-        if (sc_type_size(types[i]) > width)
-            width = sc_type_size(types[i]);
+        mixed |= !same_type(types[i], types[0]);
+        if (sc_ltype_size(types[i]) > width)
+            width = sc_ltype_size(types[i]);
     }
     fputs(mixed ? "expression,type" : "expression", out);
     for (int pass = 0; pass < 1 + o->ulp; pass++)
         for (int k = 0; k < width; k++) {
-            fputc(',', out);
+            char name[16];
             if (mixed)
-                fprintf(out, "c%d", k);
+                snprintf(name, sizeof name, "c%d", k);
             else
-                csv_column_name(out, types[0], k);
-            fputs(pass ? "_ulp" : "", out);
+                sc_value_column_name(name, sizeof name, types[0], k);
+            fprintf(out, ",%s%s", name, pass ? "_ulp" : "");
         }
     fputc('\n', out);
 }
@@ -260,17 +316,18 @@ void sc_print_csv_field(FILE *out, const char *s)
     fputc('"', out);
 }
 
-static void print_csv(FILE *out, const char *src, const sc_value *v, const sc_value *ref,
+static void print_csv(FILE *out, const char *src, const sc_lvalue *v, const sc_lvalue *ref,
                       const eval_options *o, int mixed, int width)
 {
-    int n = sc_type_size(v->type);
+    char tb[16];
+    int n = sc_ltype_size(v->type);
     sc_print_csv_field(out, src);
     if (mixed)
-        fprintf(out, ",%s", sc_type_name(v->type));
+        fprintf(out, ",%s", sc_ltype_name(v->type, tb, sizeof tb));
     for (int k = 0; k < width; k++) {
         fputc(',', out);
         if (k < n)
-            print_number(out, v->v[k], o, 0);
+            print_component(out, v, k, o, 0);
     }
     for (int k = 0; o->ulp && k < width; k++) {
         fputc(',', out);
@@ -281,7 +338,7 @@ static void print_csv(FILE *out, const char *src, const sc_value *v, const sc_va
 }
 
 /* One result line in the chosen format (csv: `mixed` and `width` as the header's). */
-static void print_result(const char *src, const sc_value *v, const sc_value *ref,
+static void print_result(const char *src, const sc_lvalue *v, const sc_lvalue *ref,
                          const eval_options *o, int mixed, int width)
 {
     if (o->format == FMT_GLSL)
@@ -370,25 +427,25 @@ static int parse_options(int argc, char **argv, eval_options *o, define_set *d)
 /* Expressions given as arguments: all compiled (and the csv header chosen) before any output. */
 static int run_list(const expression_list *list, const define_set *d, const eval_options *o)
 {
-    sc_expr **progs = calloc((size_t)list->count + 1, sizeof *progs);
-    sc_type *types = calloc((size_t)list->count + 1, sizeof *types);
+    sc_program **progs = calloc((size_t)list->count + 1, sizeof *progs);
+    sc_ltype *types = calloc((size_t)list->count + 1, sizeof *types);
     int status = progs && types ? SC_EXIT_OK : SC_EXIT_RUNTIME, mixed = 0, width = 0;
     char where[32] = "";
     for (int i = 0; i < list->count && status == SC_EXIT_OK; i++) {
         if (list->count > 1)
             snprintf(where, sizeof where, "expression %d: ", i + 1);
-        progs[i] = compile(list->src[i], d, where);
+        progs[i] = compile(list->src[i], d, o, where);
         status = progs[i] ? SC_EXIT_OK : SC_EXIT_USAGE;
         if (progs[i]) {
-            types[i] = sc_expr_result_type(progs[i]);
-            mixed |= types[i] != types[0];
-            width = sc_type_size(types[i]) > width ? sc_type_size(types[i]) : width;
+            types[i] = result_type(progs[i]);
+            mixed |= !same_type(types[i], types[0]);
+            width = sc_ltype_size(types[i]) > width ? sc_ltype_size(types[i]) : width;
         }
     }
     if (status == SC_EXIT_OK && o->format == FMT_CSV && list->count > 0)
         print_csv_header(stdout, types, list->count, o);
     for (int i = 0; i < list->count && status == SC_EXIT_OK; i++) {
-        sc_value v, ref;
+        sc_lvalue v, ref;
         if (list->count > 1)
             snprintf(where, sizeof where, "expression %d: ", i + 1);
         status = evaluate(progs[i], d, o, where, &v, &ref);
@@ -397,7 +454,7 @@ static int run_list(const expression_list *list, const define_set *d, const eval
         print_result(list->src[i], &v, &ref, o, mixed, width);
     }
     for (int i = 0; progs && i < list->count; i++)
-        sc_expr_free(progs[i]);
+        sc_program_free(progs[i]);
     free(progs);
     free(types);
     return status;
@@ -409,34 +466,36 @@ static int run_list(const expression_list *list, const define_set *d, const eval
  * it too (the input is not held to look ahead). */
 typedef struct {
     int printed;
-    sc_type type;
+    sc_ltype type;
 } csv_header;
 
 /* One line of standard input: compiled, evaluated and printed. Status as the command's. */
 static int run_line(const char *src, const char *where, const define_set *d, const eval_options *o,
                     csv_header *header)
 {
-    sc_expr *e = compile(src, d, where);
-    if (!e)
+    sc_program *prog = compile(src, d, o, where);
+    if (!prog)
         return SC_EXIT_USAGE;
-    sc_type t = sc_expr_result_type(e);
-    sc_value v, ref;
+    sc_ltype t = result_type(prog);
+    sc_lvalue v, ref;
     int status = SC_EXIT_OK;
-    if (o->format == FMT_CSV && header->printed && t != header->type) {
+    char tb[16], hb[16];
+    if (o->format == FMT_CSV && header->printed && !same_type(t, header->type)) {
         sc_error("%sa %s in csv under the header of a %s (the first line's type): give "
                  "expressions of one type, or several as arguments",
-                 where, sc_type_name(t), sc_type_name(header->type));
+                 where, sc_ltype_name(t, tb, sizeof tb),
+                 sc_ltype_name(header->type, hb, sizeof hb));
         status = SC_EXIT_USAGE;
     } else {
-        status = evaluate(e, d, o, where, &v, &ref);
+        status = evaluate(prog, d, o, where, &v, &ref);
     }
     if (status == SC_EXIT_OK && o->format == FMT_CSV && !header->printed) {
         print_csv_header(stdout, &t, 1, o);
         *header = (csv_header){1, t};
     }
     if (status == SC_EXIT_OK)
-        print_result(src, &v, &ref, o, 0, sc_type_size(t));
-    sc_expr_free(e);
+        print_result(src, &v, &ref, o, 0, sc_ltype_size(t));
+    sc_program_free(prog);
     return status;
 }
 
@@ -470,7 +529,7 @@ static int run_stdin(const define_set *d, const eval_options *o)
         return SC_EXIT_RUNTIME;
     }
     flush_lines_if_interactive();
-    csv_header header = {0, SC_FLOAT};
+    csv_header header = {0, {SC_KIND_FLOAT, 1, 1}};
     int status = SC_EXIT_OK;
     line_status ls;
     while ((ls = line_reader_next(&r)) != LINE_END) {

@@ -409,6 +409,13 @@ static int job_eval(void *user, int worker, const double *vars, double *results,
     return j->plan->eval(j->plan->user, worker, vars, results, err, errsize);
 }
 
+static int job_eval_block(void *user, int worker, int count, const double *vars, double *results,
+                          char *err, size_t errsize)
+{
+    const job_context *j = user;
+    return j->plan->eval_block(j->plan->user, worker, count, vars, results, err, errsize);
+}
+
 static int job_consume(void *user, uint64_t row, const double *vars, const double *results,
                        char *err, size_t errsize)
 {
@@ -441,14 +448,15 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
     job_context ctx = {plan, pictures, &bar};
     sc_sweep_job job = {g,
                         plan->n_results,
-                        job_eval,
+                        plan->eval ? job_eval : NULL,
                         &ctx,
                         o->pictures.plot || o->pictures.image || o->pictures.heatmap ? job_consume
                                                                                      : NULL,
                         file ? &table : NULL,
                         file ? sc_atomic_stream(file) : NULL,
                         isatty(STDERR_FILENO) ? job_progress : NULL,
-                        (int)o->threads};
+                        (int)o->threads,
+                        plan->eval_block ? job_eval_block : NULL};
     sc_sweep_status status = SC_SWEEP_OK;
     if (file && sc_sweep_write_header(job.out, &table) < 0)
         status = SC_SWEEP_WRITE_ERROR;

@@ -73,23 +73,27 @@ static void record_domain(void *user, int line, int column, const char *func, co
     }
 }
 
+void sc_report_domain_hit(const char *at, const char *func, const char *rule, int strict)
+{
+    if (strict)
+        sc_error("%s: %s: %s is outside the GLSL ES domain (--strict)", at, func, rule);
+    else if (strncmp(func, "operator", 8) == 0)
+        sc_warning("%s: %s: %s is undefined in GLSL ES; the result is shadecalc's (man page, "
+                   "EVAL FILES)",
+                   at, func, rule);
+    else
+        sc_warning("%s: %s: %s is outside the GLSL ES domain; the result is the IEEE value of "
+                   "its formula",
+                   at, func, rule);
+}
+
 /* Reports the domain errors since the last value; 1 if they are fatal (--strict). */
 static int report_domain(file_run *run)
 {
     for (int i = 0; i < run->n_hits; i++) {
-        if (run->o->strict)
-            sc_error("%s:%d:%d: %s: %s is outside the GLSL ES domain (--strict)", run->name,
-                     run->hit[i].line, run->hit[i].column, run->hit[i].func, run->hit[i].rule);
-        else if (strncmp(run->hit[i].func, "operator", 8) == 0)
-            sc_warning("%s:%d:%d: %s: %s is undefined in GLSL ES; the result is shadecalc's "
-                       "(man page, EVAL FILES)",
-                       run->name, run->hit[i].line, run->hit[i].column, run->hit[i].func,
-                       run->hit[i].rule);
-        else
-            sc_warning("%s:%d:%d: %s: %s is outside the GLSL ES domain; the result is the IEEE "
-                       "value of its formula",
-                       run->name, run->hit[i].line, run->hit[i].column, run->hit[i].func,
-                       run->hit[i].rule);
+        char at[1100];
+        snprintf(at, sizeof at, "%.1024s:%d:%d", run->name, run->hit[i].line, run->hit[i].column);
+        sc_report_domain_hit(at, run->hit[i].func, run->hit[i].rule, run->o->strict);
     }
     int fatal = run->o->strict && run->n_hits > 0;
     run->n_hits = 0;
@@ -98,23 +102,32 @@ static int report_domain(file_run *run)
 
 /* ---- printing ---- */
 
-static void print_component(FILE *out, const file_run *run, sc_kind kind, double x, int json)
+void sc_print_component(FILE *out, double x, sc_kind kind, sc_prec p, int hex, int json)
 {
-    const eval_file_options *o = run->o;
     if (kind == SC_KIND_BOOL) {
         fputs(x != 0.0 ? "true" : "false", out);
         return;
     }
     if (kind != SC_KIND_FLOAT) {
-        int bits = sc_int_bits(o->prec);
+        int bits = sc_int_bits(p);
         unsigned long long u = (unsigned long long)(long long)x & ((1ULL << bits) - 1);
-        if (o->hex)
+        if (hex)
             fprintf(out, json ? "\"0x%0*llx\"" : "0x%0*llx", (bits + 3) / 4, u);
         else
             fprintf(out, "%.0f", x);
         return;
     }
-    sc_print_float(out, x, o->prec, o->hex, json);
+    sc_print_float(out, x, p, hex, json);
+}
+
+void sc_value_column_name(char *buf, size_t size, sc_ltype t, int k)
+{
+    if (sc_ltype_size(t) == 1)
+        snprintf(buf, size, "value");
+    else if (t.cols == 1)
+        snprintf(buf, size, "%c", "xyzw"[k]);
+    else
+        snprintf(buf, size, "c%dr%d", k / t.rows, k % t.rows);
 }
 
 void sc_print_float(FILE *out, double x, sc_prec p, int hex, int json)
@@ -133,7 +146,7 @@ static void print_components(FILE *out, const file_run *run, const sc_lvalue *v,
 {
     for (int k = 0; k < sc_ltype_size(v->type); k++) {
         fputs(k ? sep : "", out);
-        print_component(out, run, (sc_kind)v->type.kind, v->v[k], json);
+        sc_print_component(out, v->v[k], (sc_kind)v->type.kind, run->o->prec, run->o->hex, json);
     }
 }
 
@@ -162,14 +175,11 @@ static void print_json(const file_run *run, const char *text, int line, const sc
 
 static void print_csv_header(sc_ltype t)
 {
+    char name[16];
     fputs("expression", stdout);
     for (int k = 0; k < sc_ltype_size(t); k++) {
-        if (sc_ltype_size(t) == 1)
-            fputs(",value", stdout);
-        else if (t.cols == 1)
-            printf(",%c", "xyzw"[k]);
-        else
-            printf(",c%dr%d", k / t.rows, k % t.rows);
+        sc_value_column_name(name, sizeof name, t, k);
+        printf(",%s", name);
     }
     fputc('\n', stdout);
 }
@@ -229,14 +239,6 @@ static int on_value(void *user, const char *text, int len, int line, const sc_lv
 
 /* ---- the command ---- */
 
-static sc_ltype ltype_of(sc_type t)
-{
-    int n = sc_type_matrix_n(t);
-    sc_ltype lt = {SC_KIND_FLOAT, (unsigned char)(n ? n : 1),
-                   (unsigned char)(n ? n : sc_type_size(t))};
-    return lt;
-}
-
 static int run_program(const sc_program *prog, const char *name, const sc_lvalue *inputs,
                        const eval_file_options *o)
 {
@@ -252,7 +254,7 @@ static int run_program(const sc_program *prog, const char *name, const sc_lvalue
     return run.status;
 }
 
-int sc_eval_file(const char *path, const sc_expr_input *defines, const sc_value *values,
+int sc_eval_file(const char *path, const sc_lang_input *defines, const sc_lvalue *values,
                  int n_defines, const eval_file_options *o)
 {
     int is_stdin = strcmp(path, "-") == 0;
@@ -267,23 +269,15 @@ int sc_eval_file(const char *path, const sc_expr_input *defines, const sc_value 
         fclose(in);
     if (!src)
         return SC_EXIT_USAGE;
-    sc_lang_input inputs[32];
-    sc_lvalue in_values[32];
-    for (int i = 0; i < n_defines && i < 32; i++) {
-        inputs[i] = (sc_lang_input){defines[i].name, ltype_of(defines[i].type)};
-        in_values[i].type = inputs[i].type;
-        memcpy(in_values[i].v, values[i].v, sizeof values[i].v);
-    }
     sc_lang_options options = {o->max_iterations, 0, 0};
     sc_lang_error err;
-    sc_program *prog = sc_program_compile(src, inputs, n_defines < 32 ? n_defines : 32, &options,
-                                          &err);
+    sc_program *prog = sc_program_compile(src, defines, n_defines, &options, &err);
     free(src);
     if (!prog) {
         sc_error("%s:%d:%d: %s", name, err.line, err.column, err.message);
         return SC_EXIT_USAGE;
     }
-    int status = run_program(prog, name, in_values, o);
+    int status = run_program(prog, name, values, o);
     sc_program_free(prog);
     return status;
 }

@@ -5,7 +5,6 @@
 
 #include <stdio.h>
 
-#include "shadecalc/expr.h"
 #include "shadecalc/lang.h"
 
 enum { FMT_GLSL, FMT_CSV, FMT_JSON };
@@ -19,13 +18,22 @@ typedef struct {
 
 /* Runs the program in file `path` ("-": standard input) with the -D definitions (names, types
  * and values in the precision); returns the command's exit status. */
-int sc_eval_file(const char *path, const sc_expr_input *defines, const sc_value *values,
+int sc_eval_file(const char *path, const sc_lang_input *defines, const sc_lvalue *values,
                  int n_defines, const eval_file_options *o);
 
 /* Shared with cmd_eval.c: a component in precision p (the shortest decimal, or its bits with
  * hex; NaN, Inf and bits quoted in JSON) and an RFC 4180 CSV field (a JSON string:
  * sc_print_json_string, cli/cli.h). */
 void sc_print_float(FILE *out, double x, sc_prec p, int hex, int json);
+/* A component of a value of kind `kind`: a float as sc_print_float prints it, an int or uint as
+ * an integer (hex: its two's complement bits of the precision's width), a bool true or false. */
+void sc_print_component(FILE *out, double x, sc_kind kind, sc_prec p, int hex, int json);
+/* The csv column of component k of a value of type t: value | x y z w | c0r0 c0r1 ...
+ * (column-major). */
+void sc_value_column_name(char *buf, size_t size, sc_ltype t, int k);
 void sc_print_csv_field(FILE *out, const char *s);
+/* A domain error or undefined operation at `at` ("F:LINE:COLUMN", "column C"): an error with
+ * --strict, else a warning. */
+void sc_report_domain_hit(const char *at, const char *func, const char *rule, int strict);
 
 #endif

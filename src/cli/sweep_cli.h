@@ -18,6 +18,9 @@ typedef struct {
     int rgb; /* the columns are r,g,b: drawn as one curve when they agree on every row */
     int (*eval)(void *user, int worker, const double *vars, double *results, char *err,
                 size_t errsize);
+    /* instead of eval (NULL then): many rows at once (sc_sweep_job.eval_block) */
+    int (*eval_block)(void *user, int worker, int count, const double *vars, double *results,
+                      char *err, size_t errsize);
     void *user;
     void (*report)(void *user); /* after the run: warnings (may be NULL) */
     void (*destroy)(void *user);

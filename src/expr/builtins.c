@@ -364,3 +364,10 @@ sc_value sc_builtin_eval(int index, const call_context *ctx, const sc_value *arg
         types[i] = args[i].type;
     return eval_componentwise(b, ctx, args, n_args, result_type(b, types));
 }
+
+int sc_builtin_componentwise(int index, sc_builtin_scalar *out)
+{
+    const builtin *b = &builtins[index];
+    *out = (sc_builtin_scalar){b->f1, b->f2, b->f3, b->domain};
+    return b->eval ? -1 : 0;
+}

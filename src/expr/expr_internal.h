@@ -87,6 +87,18 @@ int sc_builtin_exists(const char *name, int name_len);
 sc_value sc_builtin_eval(int index, const call_context *ctx, const sc_value *args, int n_args);
 const char *sc_builtin_name(int index);
 
+/* The scalar form of a component-wise built-in (sin, pow, clamp ...: component k of the result
+ * from component k of each argument, a float argument broadcast): exactly one of f1 f2 f3 set,
+ * and its GLSL ES domain (NULL if it has none: else the rule the arguments a[] break, or NULL).
+ * Returns 0, or -1 for the other built-ins (dot, normalize, inverse ...). */
+typedef struct {
+    double (*f1)(sc_prec, double);
+    double (*f2)(sc_prec, double, double);
+    double (*f3)(sc_prec, double, double, double);
+    const char *(*domain)(const double *a);
+} sc_builtin_scalar;
+int sc_builtin_componentwise(int index, sc_builtin_scalar *out);
+
 /* ---- constructors (construct.c) ---- */
 
 /* Type check of `type(args...)`: 0, or -1 with a message in msg. */

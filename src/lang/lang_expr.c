@@ -301,6 +301,19 @@ static int add_call(compiler *cs, builtin_call call)
     return pr->n_calls++;
 }
 
+/* How to write an int or uint value `t` where a float one is expected ("" for other types). */
+static const char *float_hint(sc_ltype t, char *buf, size_t size)
+{
+    char fb[16];
+    if (!sc_lt_is_integer(t)) {
+        buf[0] = '\0';
+        return buf;
+    }
+    snprintf(buf, size, ": write a float literal (1.0, not 1) or convert (%s(...))",
+             sc_ltype_name(sc_lt(SC_KIND_FLOAT, t.cols, t.rows), fb, (int)sizeof fb));
+    return buf;
+}
+
 /* The float built-ins of expr/builtins.c: every argument float, vecN or matN. */
 static int resolve_float_builtin(const compiler *cs, const ltoken *name, const operand *args,
                                  int n_args, builtin_call *call, char *msg, int msg_size)
@@ -308,11 +321,12 @@ static int resolve_float_builtin(const compiler *cs, const ltoken *name, const o
     sc_type types[4], result;
     for (int i = 0; i < n_args; i++)
         if (sc_lt_to_expr(args[i].type, &types[i]) < 0) {
-            char tb[16];
+            char tb[16], hint[80];
             snprintf(msg, (size_t)msg_size,
                      "%.*s: argument %d is %s, and there is no such overload (GLSL ES converts "
-                     "nothing implicitly)",
-                     name->len, name->start, i + 1, type_str(cs, args[i].type, tb));
+                     "nothing implicitly%s)",
+                     name->len, name->start, i + 1, type_str(cs, args[i].type, tb),
+                     float_hint(args[i].type, hint, sizeof hint));
             return -1;
         }
     call->index = sc_builtin_resolve(name->start, name->len, types, n_args, &result, msg, msg_size);
@@ -861,11 +875,14 @@ static const char *op_text(const ltoken *op, char *buf)
 
 static int mismatch(compiler *cs, const ltoken *op, sc_ltype a, sc_ltype b)
 {
-    char ob[4], ab[16], bb[16];
+    char ob[4], ab[16], bb[16], hint[80];
+    int int_beside_float = (a.kind == SC_KIND_FLOAT) != (b.kind == SC_KIND_FLOAT);
+    float_hint(a.kind == SC_KIND_FLOAT ? b : a, hint, sizeof hint);
     return fail_at(cs, op,
                    "operator '%s': operands %s and %s do not match (GLSL ES converts "
-                   "nothing implicitly)",
-                   op_text(op, ob), type_str(cs, a, ab), type_str(cs, b, bb));
+                   "nothing implicitly%s)",
+                   op_text(op, ob), type_str(cs, a, ab), type_str(cs, b, bb),
+                   int_beside_float ? hint : "");
 }
 
 static int emit_matmul(compiler *cs, const ltoken *op, const operand *a, const operand *b, int dst)

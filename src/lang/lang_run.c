@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lang/lang_internal.h"
+#include "lang/lang_vm.h"
 #include "shadecalc/pmath.h"
 
 typedef struct {
@@ -15,8 +15,7 @@ typedef struct {
     sc_prec p;
     int bits;
     double *r;
-    sc_lang_domain_fn on_domain;
-    void *user;
+    vm_report report;
     sc_lang_error *err;
     long iterations;
 } machine;
@@ -25,24 +24,51 @@ typedef struct {
 __attribute__((format(printf, 3, 4)))
 #endif
 static int
-runtime_error(machine *m, const insn *in, const char *fmt, ...)
+runtime_error(sc_lang_error *err, const insn *in, const char *fmt, ...)
 {
     va_list ap;
-    m->err->line = in->line;
-    m->err->column = in->column;
+    err->line = in->line;
+    err->column = in->column;
     va_start(ap, fmt);
-    vsnprintf(m->err->message, sizeof m->err->message, fmt, ap);
+    vsnprintf(err->message, sizeof err->message, fmt, ap);
     va_end(ap);
     return -1;
 }
 
-static void report(const machine *m, const insn *in, const char *func, const char *rule)
+int vm_index(const insn *in, double i, long long *offset, sc_lang_error *err)
 {
-    if (m->on_domain)
-        m->on_domain(m->user, in->line, in->column, func, rule);
+    if (!(i >= 0 && i < in->c))
+        return runtime_error(err, in, "index %lld is out of range 0..%lld", (long long)i,
+                             (long long)in->c - 1);
+    *offset = (long long)i * in->kind;
+    return 0;
 }
 
-/* ---- arithmetic ---- */
+int vm_too_many_iterations(const insn *in, long bound, sc_lang_error *err)
+{
+    return runtime_error(err, in, "more than %ld loop iterations (the bound: --max-iterations)",
+                         bound);
+}
+
+int vm_too_deep(const insn *in, int depth, sc_lang_error *err)
+{
+    return runtime_error(err, in, "calls nested too deeply (%d)", depth);
+}
+
+int vm_no_return(const insn *in, sc_lang_error *err)
+{
+    return runtime_error(err, in, "the function ended without 'return'");
+}
+
+static const vm_report *reporter(const machine *m) { return &m->report; }
+
+/* ---- arithmetic on one element (shared with lang_block.c through lang_vm.h) ---- */
+
+static void report(const vm_report *r, const insn *in, const char *func, const char *rule)
+{
+    if (r->fn)
+        r->fn(r->user, in->line, in->column, func, rule);
+}
 
 static double float_binary(sc_prec p, int op, double a, double b)
 {
@@ -55,10 +81,10 @@ static double float_binary(sc_prec p, int op, double a, double b)
 }
 
 /* x / 0 and x % 0 give every bit set (int -1, uint 2^32 - 1), as Direct3D 10 defines it. */
-static unsigned long long divide(const machine *m, const insn *in, long long a, long long b)
+static unsigned long long divide(const vm_report *r, const insn *in, long long a, long long b)
 {
     if (b == 0) {
-        report(m, in, in->op == OP_DIV ? "operator '/'" : "operator '%'", "division by zero");
+        report(r, in, in->op == OP_DIV ? "operator '/'" : "operator '%'", "division by zero");
         return ~0ULL;
     }
     /* |a| < 2^32: a / b and a % b fit in 64 bits (INT_MIN / -1 included) */
@@ -66,10 +92,10 @@ static unsigned long long divide(const machine *m, const insn *in, long long a, 
 }
 
 /* The shift count: b modulo 32, as GPUs and Mesa compute it; outside 0..31 is reported. */
-static int shift_count(const machine *m, const insn *in, long long b)
+static int shift_count(const vm_report *r, const insn *in, long long b)
 {
     if (b < 0 || b > 31)
-        report(m, in, in->op == OP_SHL ? "operator '<<'" : "operator '>>'",
+        report(r, in, in->op == OP_SHL ? "operator '<<'" : "operator '>>'",
                "shift count outside 0..31");
     return (int)((unsigned long long)b & 31u);
 }
@@ -82,7 +108,7 @@ static double shift_right(sc_kind kind, long long a, int count)
 }
 
 /* An integer operation: exact in 64 bits (operands are below 2^32 in magnitude), then wrapped. */
-static double integer_binary(const machine *m, const insn *in, double x, double y)
+double vm_integer_binary(const insn *in, int bits, double x, double y, const vm_report *r)
 {
     long long a = (long long)x, b = (long long)y;
     unsigned long long ua = (unsigned long long)a, ub = (unsigned long long)b, u;
@@ -92,14 +118,14 @@ static double integer_binary(const machine *m, const insn *in, double x, double 
     case OP_SUB: u = ua - ub; break;
     case OP_MUL: u = ua * ub; break;
     case OP_DIV:
-    case OP_MOD: u = divide(m, in, a, b); break;
+    case OP_MOD: u = divide(r, in, a, b); break;
     case OP_BITAND: u = ua & ub; break;
     case OP_BITOR: u = ua | ub; break;
     case OP_BITXOR: u = ua ^ ub; break;
-    case OP_SHL: u = ua << shift_count(m, in, b); break;
-    default: return sc_int_wrap(kind, m->bits, shift_right(kind, a, shift_count(m, in, b)));
+    case OP_SHL: u = ua << shift_count(r, in, b); break;
+    default: return sc_int_wrap(kind, bits, shift_right(kind, a, shift_count(r, in, b)));
     }
-    return sc_int_wrap_bits(kind, m->bits, u);
+    return sc_int_wrap_bits(kind, bits, u);
 }
 
 static void binary(const machine *m, const insn *in)
@@ -108,26 +134,27 @@ static void binary(const machine *m, const insn *in)
     int sa = in->flags & BCAST_A ? 0 : 1, sb = in->flags & BCAST_B ? 0 : 1;
     for (int k = 0; k < in->n; k++) {
         double a = r[in->a + k * sa], b = r[in->b + k * sb];
-        r[in->dst + k] = in->kind == SC_KIND_FLOAT ? float_binary(m->p, in->op, a, b)
-                                                   : integer_binary(m, in, a, b);
+        r[in->dst + k] = in->kind == SC_KIND_FLOAT
+                             ? float_binary(m->p, in->op, a, b)
+                             : vm_integer_binary(in, m->bits, a, b, reporter(m));
     }
+}
+
+double vm_unary(const insn *in, int bits, double a)
+{
+    if (in->op == OP_NOT)
+        return a == 0.0;
+    if (in->kind == SC_KIND_FLOAT)
+        return -a;
+    /* an integer: its bits, complemented or negated, wrapped */
+    unsigned long long u = (unsigned long long)(long long)a;
+    return sc_int_wrap_bits((sc_kind)in->kind, bits, in->op == OP_BITNOT ? ~u : 0 - u);
 }
 
 static void unary(const machine *m, const insn *in)
 {
-    double *r = m->r;
-    for (int k = 0; k < in->n; k++) {
-        double a = r[in->a + k];
-        if (in->op == OP_NOT)
-            r[in->dst + k] = a == 0.0;
-        else if (in->kind == SC_KIND_FLOAT)
-            r[in->dst + k] = -a;
-        else /* an integer: its bits, complemented or negated, wrapped */
-            r[in->dst + k] = sc_int_wrap_bits((sc_kind)in->kind, m->bits,
-                                              in->op == OP_BITNOT
-                                                  ? ~(unsigned long long)(long long)a
-                                                  : 0 - (unsigned long long)(long long)a);
-    }
+    for (int k = 0; k < in->n; k++)
+        m->r[in->dst + k] = vm_unary(in, m->bits, m->r[in->a + k]);
 }
 
 static void compare(const machine *m, const insn *in)
@@ -144,19 +171,24 @@ static void compare(const machine *m, const insn *in)
 }
 
 /* Element (r, c) of the product is dot(row r of a, column c of b), rounded as sc_p_dot rounds. */
-static void matmul(const machine *m, const insn *in)
+void vm_matmul(sc_prec p, const int *dims, const double *a, const double *b, double *out)
 {
-    const int *dims = m->prog->aux + in->c;
     int rows = dims[0], inner = dims[1], cols = dims[2];
-    double out[16], row[4];
-    const double *a = m->r + in->a, *b = m->r + in->b;
+    double row[4];
     for (int c = 0; c < cols; c++)
         for (int i = 0; i < rows; i++) {
             for (int j = 0; j < inner; j++)
                 row[j] = a[j * rows + i];
-            out[c * rows + i] = sc_p_dot(m->p, row, b + c * inner, inner);
+            out[c * rows + i] = sc_p_dot(p, row, b + c * inner, inner);
         }
-    memcpy(m->r + in->dst, out, (size_t)(rows * cols) * sizeof *out);
+}
+
+static void matmul(const machine *m, const insn *in)
+{
+    const int *dims = m->prog->aux + in->c;
+    double out[16];
+    vm_matmul(m->p, dims, m->r + in->a, m->r + in->b, out);
+    memcpy(m->r + in->dst, out, (size_t)(dims[0] * dims[2]) * sizeof *out);
 }
 
 static void convert(const machine *m, const insn *in)
@@ -169,50 +201,42 @@ static void convert(const machine *m, const insn *in)
 /* ---- built-ins ---- */
 
 typedef struct {
-    const machine *m;
+    const vm_report *r;
     int line;
 } domain_context;
 
 static void forward_domain(void *user, int column, const char *func, const char *rule)
 {
     const domain_context *d = user;
-    if (d->m->on_domain)
-        d->m->on_domain(d->m->user, d->line, column, func, rule);
+    if (d->r->fn)
+        d->r->fn(d->r->user, d->line, column, func, rule);
+}
+
+void vm_builtin(sc_prec p, const builtin_call *call, const insn *in, const double *const *args,
+                double *dst, const vm_report *r)
+{
+    if (call->is_lang) {
+        sc_lang_builtin_eval(call->index, p, args, call->types, call->n_args, call->result, dst);
+        return;
+    }
+    sc_value values[4];
+    for (int i = 0; i < call->n_args; i++) {
+        sc_lt_to_expr(call->types[i], &values[i].type);
+        memcpy(values[i].v, args[i], (size_t)sc_ltype_size(call->types[i]) * sizeof(double));
+    }
+    domain_context d = {r, in->line};
+    call_context ctx = {p, in->column, sc_builtin_name(call->index), forward_domain, &d};
+    sc_value v = sc_builtin_eval(call->index, &ctx, values, call->n_args);
+    memcpy(dst, v.v, (size_t)sc_ltype_size(call->result) * sizeof(double));
 }
 
 static void call_builtin(const machine *m, const insn *in)
 {
     const builtin_call *call = &m->prog->calls[in->c];
-    double *dst = m->r + in->dst;
-    if (call->is_lang) {
-        const double *args[4];
-        for (int i = 0; i < call->n_args; i++)
-            args[i] = m->r + call->args[i];
-        sc_lang_builtin_eval(call->index, m->p, args, call->types, call->n_args, call->result, dst);
-        return;
-    }
-    sc_value args[4];
-    for (int i = 0; i < call->n_args; i++) {
-        sc_lt_to_expr(call->types[i], &args[i].type);
-        memcpy(args[i].v, m->r + call->args[i],
-               (size_t)sc_ltype_size(call->types[i]) * sizeof(double));
-    }
-    domain_context d = {m, in->line};
-    call_context ctx = {m->p, in->column, sc_builtin_name(call->index), forward_domain, &d};
-    sc_value v = sc_builtin_eval(call->index, &ctx, args, call->n_args);
-    memcpy(dst, v.v, (size_t)sc_ltype_size(call->result) * sizeof(double));
-}
-
-/* ---- indexing at run time ---- */
-
-static int indexed(machine *m, const insn *in, long long *offset)
-{
-    double i = m->r[in->b];
-    if (!(i >= 0 && i < in->c))
-        return runtime_error(m, in, "index %lld is out of range 0..%lld", (long long)i,
-                             (long long)in->c - 1);
-    *offset = (long long)i * in->kind;
-    return 0;
+    const double *args[4];
+    for (int i = 0; i < call->n_args; i++)
+        args[i] = m->r + call->args[i];
+    vm_builtin(m->p, call, in, args, m->r + in->dst, reporter(m));
 }
 
 /* ---- the loop ---- */
@@ -231,7 +255,7 @@ static int execute(machine *m, int *stack, sc_lang_emit_fn emit, void *user)
 {
     const insn *code = m->prog->code;
     int sp = 0, pc = 0;
-    long long offset;
+    long long offset = 0;
     for (;;) {
         const insn *in = &code[pc++];
         double *r = m->r;
@@ -261,27 +285,24 @@ static int execute(machine *m, int *stack, sc_lang_emit_fn emit, void *user)
         case OP_JNZ: pc = r[in->a] != 0.0 ? in->c : pc; break;
         case OP_LOOP:
             if (++m->iterations > m->prog->max_iterations)
-                return runtime_error(m, in,
-                                     "more than %ld loop iterations (the bound: "
-                                     "--max-iterations)",
-                                     m->prog->max_iterations);
+                return vm_too_many_iterations(in, m->prog->max_iterations, m->err);
             break;
         case OP_CALL:
             if (sp > m->prog->max_call_depth)
-                return runtime_error(m, in, "calls nested too deeply (%d)", sp);
+                return vm_too_deep(in, sp, m->err);
             stack[sp++] = pc;
             pc = in->c;
             break;
         case OP_RET: pc = stack[--sp]; break;
-        case OP_NORETURN: return runtime_error(m, in, "the function ended without 'return'");
+        case OP_NORETURN: return vm_no_return(in, m->err);
         case OP_BUILTIN: call_builtin(m, in); break;
         case OP_LOAD:
-            if (indexed(m, in, &offset) < 0)
+            if (vm_index(in, r[in->b], &offset, m->err) < 0)
                 return -1;
             memcpy(r + in->dst, r + in->a + offset, (size_t)in->n * sizeof *r);
             break;
         case OP_STORE:
-            if (indexed(m, in, &offset) < 0)
+            if (vm_index(in, r[in->b], &offset, m->err) < 0)
                 return -1;
             memcpy(r + in->dst + offset, r + in->a, (size_t)in->n * sizeof *r);
             break;
@@ -294,31 +315,31 @@ static int execute(machine *m, int *stack, sc_lang_emit_fn emit, void *user)
     }
 }
 
-/* Constants and inputs in the precision: floats rounded, integers wrapped to the width. */
-static double in_precision(const machine *m, sc_kind kind, double x)
+double vm_in_precision(sc_prec p, int bits, sc_kind kind, double x)
 {
     if (kind == SC_KIND_FLOAT)
-        return sc_round(m->p, x);
+        return sc_round(p, x);
     if (kind == SC_KIND_BOOL)
         return x != 0.0;
-    return sc_int_wrap(kind, m->bits, x);
+    return sc_int_wrap(kind, bits, x);
 }
 
 static void load_inputs(machine *m, const sc_lvalue *inputs)
 {
     const sc_program *pr = m->prog;
     for (int i = 0; i < pr->n_consts; i++)
-        m->r[pr->consts[i].reg] = in_precision(m, pr->consts[i].kind, pr->consts[i].value);
+        m->r[pr->consts[i].reg] = vm_in_precision(m->p, m->bits, pr->consts[i].kind,
+                                                  pr->consts[i].value);
     for (int i = 0; i < pr->n_inputs; i++)
         for (int k = 0; k < sc_ltype_size(pr->input_types[i]); k++)
-            m->r[pr->input_regs[i] + k] = in_precision(m, (sc_kind)pr->input_types[i].kind,
-                                                       inputs[i].v[k]);
+            m->r[pr->input_regs[i] + k] = vm_in_precision(
+                m->p, m->bits, (sc_kind)pr->input_types[i].kind, inputs[i].v[k]);
 }
 
 int sc_program_run(const sc_program *prog, sc_prec p, const sc_lvalue *inputs, sc_lang_emit_fn emit,
                    sc_lang_domain_fn on_domain, void *user, sc_lang_error *err)
 {
-    machine m = {prog, p, sc_int_bits(p), NULL, on_domain, user, err, 0};
+    machine m = {prog, p, sc_int_bits(p), NULL, {on_domain, user}, err, 0};
     memset(err, 0, sizeof *err);
     m.r = calloc((size_t)prog->n_regs + 1, sizeof *m.r);
     int *stack = malloc(((size_t)prog->max_call_depth + 1) * sizeof *stack);

@@ -53,31 +53,52 @@ static int block_row_count(const runner *r, uint64_t block)
     return left < (uint64_t)r->block_rows ? (int)left : r->block_rows;
 }
 
+/* Evaluates rows first.. of the block one at a time: the number evaluated before one failed. */
+static int eval_rows(const runner *r, int worker, uint64_t first, int count, slot *s, char *msg,
+                     size_t size)
+{
+    const sc_sweep_job *job = r->job;
+    for (int i = 0; i < count; i++) {
+        double *vars = s->vars + (size_t)i * (size_t)r->n_vars;
+        sc_sweep_grid_point(job->grid, first + (uint64_t)i, vars);
+        if (job->eval(job->user, worker, vars, s->results + (size_t)i * (size_t)job->n_results, msg,
+                      size) < 0)
+            return i;
+    }
+    return count;
+}
+
+/* The same through eval_block, every row at once. */
+static int eval_rows_at_once(const runner *r, int worker, uint64_t first, int count, slot *s,
+                             char *msg, size_t size)
+{
+    const sc_sweep_job *job = r->job;
+    for (int i = 0; i < count; i++)
+        sc_sweep_grid_point(job->grid, first + (uint64_t)i,
+                            s->vars + (size_t)i * (size_t)r->n_vars);
+    return job->eval_block(job->user, worker, count, s->vars, s->results, msg, size);
+}
+
 /* Evaluates and formats one block into s (no lock held). */
 static void fill_block(const runner *r, int worker, uint64_t block, slot *s)
 {
     const sc_sweep_job *job = r->job;
     int count = block_row_count(r, block);
     uint64_t first = block * (uint64_t)r->block_rows;
+    char msg[ERR_MAX - 32] = "";
+    s->rows = job->eval_block ? eval_rows_at_once(r, worker, first, count, s, msg, sizeof msg)
+                              : eval_rows(r, worker, first, count, s, msg, sizeof msg);
     s->text_len = 0;
-    s->failed = 0;
-    for (s->rows = 0; s->rows < count; s->rows++) {
-        double *vars = s->vars + (size_t)s->rows * (size_t)r->n_vars;
-        double *results = s->results + (size_t)s->rows * (size_t)job->n_results;
-        sc_sweep_grid_point(job->grid, first + (uint64_t)s->rows, vars);
-        char msg[ERR_MAX - 32];
-        if (job->eval(job->user, worker, vars, results, msg, sizeof msg) < 0) {
-            snprintf(s->err, sizeof s->err, "row %llu: %s",
-                     (unsigned long long)(first + (uint64_t)s->rows + 1), msg);
-            s->failed = 1;
-            return;
-        }
-        if (job->table) {
-            int len = sc_sweep_format_row(s->text + s->text_len, r->row_max, job->table, vars,
-                                          results);
-            s->text_len += len > 0 ? (size_t)len : 0;
-        }
+    for (int i = 0; job->table && i < s->rows; i++) {
+        int len = sc_sweep_format_row(s->text + s->text_len, r->row_max, job->table,
+                                      s->vars + (size_t)i * (size_t)r->n_vars,
+                                      s->results + (size_t)i * (size_t)job->n_results);
+        s->text_len += len > 0 ? (size_t)len : 0;
     }
+    s->failed = s->rows < count;
+    if (s->failed)
+        snprintf(s->err, sizeof s->err, "row %llu: %s",
+                 (unsigned long long)(first + (uint64_t)s->rows + 1), msg);
 }
 
 static void *worker_main(void *p)

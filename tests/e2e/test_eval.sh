@@ -4,8 +4,16 @@
 expect "normalize example"        0 'vec3(0.6, 0, 0.8)' '' -- eval 'normalize(vec3(3,0,4))'
 expect "dot type error"           2 '' 'error: column 1: dot: arguments vec3 and vec2 must have the same type' -- eval 'dot(vec3(1), vec2(1))'
 expect "several expressions"      0 '0.5
-vec2(1, 2)' '' -- eval '0.25 * 2' 'vec2(1,2)'
-expect "statements"               0 'vec2(5, 8)' '' -- eval 'a = vec4(1,2,3,4); b = a.xy * 2.; b + a.zw'
+vec2(1, 2)' '' -- eval '0.25 * 2.0' 'vec2(1,2)'
+expect "statements"               0 'vec2(5, 8)' '' -- eval 'vec4 a = vec4(1,2,3,4); vec2 b = a.xy * 2.; b + a.zw'
+# GLSL ES converts nothing implicitly: an int beside a float is an error that says what to write
+expect "int beside float"         2 '' "error: column 5: operator '+': operands float and int do not match (GLSL ES converts nothing implicitly: write a float literal (1.0, not 1) or convert (float(...)))" -- eval '1.0 + 1'
+expect "int argument of pow"      2 '' "~pow: argument 2 is int, and there is no such overload (GLSL ES converts nothing implicitly: write a float literal (1.0, not 1) or convert (float(...)))" -- eval 'pow(2.0, 3)'
+expect "ints, bools, a loop"      0 '7
+true
+ivec2(3, -3)
+120' '' -- eval '1 + 2 * 3' '2.0 > 1.0' 'ivec2(3, -3)' 'int p = 1; for (int i = 2; i <= 5; i++) p *= i; p'
+expect "loop bound is an error"   1 '' "error: column 12: more than 100 loop iterations (the bound: --max-iterations)" -- eval --max-iterations 100 'int i = 0; while (true) i++; i'
 expect "defines"                  0 '0.75' '' -- eval -D 'x=0.5' -D 'y=x*x' 'y + x'
 expect "reflect"                  0 'vec3(1, 1, 0)' '' -- eval 'reflect(vec3(1,-1,0), vec3(0,1,0))'
 expect "matrix times vector"      0 'vec2(4, 6)' '' -- eval 'mat2(1,2,3,4) * vec2(1,1)'
@@ -48,7 +56,8 @@ expect "modf is not a function"   2 '' "error: column 1: unknown function 'modf'
 # output formats
 expect "hex highp"                0 '0x3fb504f3' '' -- eval --hex 'pow(2.0, 0.5)'
 expect "hex mediump"              0 'vec2(0x3c00, 0xc000)' '' -- eval --hex -p mediump 'vec2(1, -2)'
-expect "hex double"               0 '0x3ff0000000000000' '' -- eval --hex -p double '1'
+expect "hex double"               0 '0x3ff0000000000000' '' -- eval --hex -p double '1.0'
+expect "hex int"                  0 '0xffff' '' -- eval --hex -p mediump -- '-1'
 expect "ulp exact"                0 '0.5  # ulp: 0' '' -- eval --ulp '1.0 / 2.0'
 expect "ulp mediump"              0 '1258  # ulp: 2.69' '' -- eval -p mediump --ulp 'exp2(10.3)'
 expect "json"                     0 '{"expression": "mat2(1,2,3,4) * vec2(1,1)", "precision": "highp", "type": "vec2", "value": [4, 6]}' '' -- eval --format json 'mat2(1,2,3,4) * vec2(1,1)'
@@ -85,7 +94,7 @@ expect "syntax error column"      2 '' "error: column 5: expected an expression,
 expect "unknown variable"         2 '' "error: column 1: unknown variable 'x'" -- eval 'x'
 expect "second expression error"  2 '' "error: expression 2: column 1: unknown function 'foo'" -- eval '1' 'foo(1)'
 expect "bad define"               2 '' "error: eval: -D 'x': expected NAME=EXPR" -- eval -D x '1'
-expect "define error"             2 '' "error: -D 'y': column 8: operator '+': operands vec2 and vec3 do not match" -- eval -D 'y=vec2(1)+vec3(1)' '1'
+expect "define error"             2 '' "error: -D 'y': column 8: operator '+': operands vec2 and vec3 do not match (GLSL ES converts nothing implicitly)" -- eval -D 'y=vec2(1)+vec3(1)' '1'
 expect "bad precision"            2 '' "error: eval: unknown precision 'half' (double, highp, mediump, lowp)" -- eval -p half '1'
 expect "bad format"               2 '' "error: eval: unknown format 'xml' (glsl, csv, jsonl)" -- eval -f xml '1'
 expect "unknown option"           2 '' "~unknown option '--frob'" -- eval --frob '1'
@@ -93,19 +102,20 @@ expect "help"                     0 '~usage: shadecalc eval' '' -- eval --help
 
 # long flat expressions: evaluated without recursion (a chain is as deep as it is long)
 chain4000=$(awk 'BEGIN { s = "1"; for (i = 1; i < 4000; i++) s = s "+1"; print s }')
+fchain4000=$(awk 'BEGIN { s = "1.0"; for (i = 1; i < 4000; i++) s = s "+1.0"; print s }')
 expect "4000-term chain"          0 '4000' '' -- eval "$chain4000"
 expect "4000-term chain in -D"    0 '4001' '' -- eval -D "x=$chain4000" 'x + 1'
 expect_stdin "4000-term chain on stdin" "$chain4000" 0 '4000' '' -- eval
 expect "4000-term chain in sweep" 0 'x,value
 1,4001
-2,4002' '' -- sweep --var x=1,2 "x + $chain4000"
+2,4002' '' -- sweep --var x=1,2 "x + $fchain4000"
 # one argument is at most 128 KiB (Linux MAX_ARG_STRLEN): 60 000 terms, 120 KB
 chain60k=$(awk 'BEGIN { s = "1"; for (i = 1; i < 60000; i++) s = s "+1"; print s }')
 expect "60000-term chain"         0 '60000' '' -- eval "$chain60k"
 # ~1 MB on standard input; alternating signs keep every partial sum exact in highp
 expect_stdin "1 MB chain on stdin" "$(awk 'BEGIN { for (i = 0; i < 250000; i++) printf "+1-1"; print "+7" }')" 0 '7' '' -- eval
 nest=$(awk 'BEGIN { for (i = 0; i < 300; i++) printf "-("; printf "1"; for (i = 0; i < 300; i++) printf ")" }')
-expect "deep nesting names the limit" 2 '' '~expression nested too deeply (more than 256 levels of parentheses, calls and unary operators)' -- eval -- "$nest"
+expect "deep nesting names the limit" 2 '' '~nested too deeply (more than 256 levels of parentheses, calls, operators and blocks)' -- eval -- "$nest"
 
 # standard input: streamed line by line, bad lines reported by number, read errors reported
 # stdin_run NAME STATUS STDOUT STDERR -- ARGS... < INPUT: like expect (exact outputs), with a file
@@ -135,11 +145,11 @@ expect_stdin "CRLF lines"                "$(printf '1\r\n2\r\n')" 0 '1
 2' '' -- eval
 expect_stdin "strict domain error goes on" 'sqrt(-1.0)
 2' 1 '2' 'error: line 1: column 1: sqrt: x < 0 is outside the GLSL ES domain (--strict)' -- eval --strict
-expect_stdin "csv header from the first line" '1
+expect_stdin "csv header from the first line" '1.0
 vec2(1)
-3' 2 'expression,value
-1,1
-3,3' 'error: line 2: a vec2 in csv under the header of a float (the first line'"'"'s type): give expressions of one type, or several as arguments' -- eval -f csv
+3.0' 2 'expression,value
+1.0,1
+3.0,3' 'error: line 2: a vec2 in csv under the header of a float (the first line'"'"'s type): give expressions of one type, or several as arguments' -- eval -f csv
 
 # endless input: results stream out (and the run ends when the reader does)
 verdict "endless input streams" [ "$(yes '1 + 1' | timeout 20 "$SHADECALC" eval | head -n 3 | tr '\n' ' ')" = "2 2 2 " ]
@@ -155,6 +165,6 @@ verdict "results flushed line by line on a pipe" [ "$(cat "$e2e_tmp/answers.last
 # whose shadow memory alone needs more address space than that)
 if (ulimit -v 65536 && "$SHADECALC" eval 1) >/dev/null 2>&1; then
     (ulimit -v 65536
-     expect_stdin "200000 lines in 64 MB" "$(awk 'BEGIN { for (i = 0; i < 200000; i++) print i " + 0.5" }')" 0 \
+     expect_stdin "200000 lines in 64 MB" "$(awk 'BEGIN { for (i = 0; i < 200000; i++) print i ".0 + 0.5" }')" 0 \
          "$(awk 'BEGIN { for (i = 0; i < 200000; i++) printf "%.1f\n", i + 0.5 }')" '' -- eval)
 fi

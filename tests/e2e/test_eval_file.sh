@@ -89,7 +89,7 @@ prog typeerr 'float x = 1.0;
 int y = 2;
 x + y;'
 expect "file: type error names line and column" 2 '' \
-    "error: $e2e_tmp/typeerr.glsl:3:3: operator '+': operands float and int do not match (GLSL ES converts nothing implicitly)" \
+    "error: $e2e_tmp/typeerr.glsl:3:3: operator '+': operands float and int do not match (GLSL ES converts nothing implicitly: write a float literal (1.0, not 1) or convert (float(...)))" \
     -- eval --file "$e2e_tmp/typeerr.glsl"
 expect_stdin "file: recursion rejected" 'int f(int n) {
   return n <= 1 ? 1 : n * f(n - 1);

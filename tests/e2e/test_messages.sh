@@ -89,8 +89,8 @@ expect "sweep -o t.svg is refused"        2 '' "error: sweep: -o $t/t.svg: write
 expect "sweep --plot to '-' is fine"      0 '~<svg' '' -- sweep --var x=0:1:2 x --plot -
 expect "render --compare creates --output-dir" 0 '~gouraud' '' -- render --compare --size 16x16 --output-dir "$t/cmp/new"
 expect_file "the compare images are there" "$t/cmp/new/render-exact.exr"
-expect "escaped: an expression's token"   2 '' "error: column 3: unexpected '\\x1b'" -- eval "$(printf '1+\033[2J')"
+expect "escaped: an expression's token"   2 '' "error: column 3: unexpected character: '\\x1b'" -- eval "$(printf '1+\033[2J')"
 expect "escaped: a --var"                 2 '' "~--var x\\x01=1: expected" -- sweep --var "$(printf 'x\001=1')" x
 expect "escaped: a file name"             1 '' "error: $t/a\\x09b\\x7f: No such file or directory" -- shade -s "$(printf '%s/a\tb\177' "$t")"
-expect "escaped: a lone UTF-8 byte"       2 '' "error: column 3: unexpected '\\xc3'" -- eval "$(printf '1+\303')"
+expect "escaped: a lone UTF-8 byte"       2 '' "error: column 3: unexpected character: '\\xc3'" -- eval "$(printf '1+\303')"
 expect "escaped: bad UTF-8 in a format"   2 '' "error: eval: unknown format 'j\\xc3(' (glsl, csv, jsonl)" -- eval -f "$(printf 'j\303(')" 1

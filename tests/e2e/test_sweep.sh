@@ -31,19 +31,35 @@ rows = [json.loads(line) for line in open(sys.argv[1])]
 assert len(rows) == 5 and rows[0]["result_y"] == "inf" and rows[4]["result_x"] == 1, rows' \
     "$e2e_tmp/rows.jsonl"
 
-# every row against `shadecalc eval` of the same expression with the value written in
+# every row against `shadecalc eval` of the same expression with the value written in (as a
+# float: a value printed as `1` is an int literal in GLSL ES)
 sweep --var x=0:1:7 --var y=0.5,3 'pow(x, 32.0) * y + sin(x)' | tail -n +2 >"$e2e_tmp/rows.csv"
 same=1
 while IFS=, read -r x y value; do
-    [ "$("$SHADECALC" eval "pow($x, 32.0) * $y + sin($x)")" = "$value" ] || same=0
+    [ "$("$SHADECALC" eval "pow(float($x), 32.0) * float($y) + sin(float($x))")" = "$value" ] || same=0
 done <"$e2e_tmp/rows.csv"
 verdict "rows equal eval" test $same = 1
 sweep -p mediump --var x=0.1:10:5 'exp2(x)' | tail -n +2 >"$e2e_tmp/rows.csv"
 same=1
 while IFS=, read -r x value; do
-    [ "$("$SHADECALC" eval -p mediump "exp2($x)")" = "$value" ] || same=0
+    [ "$("$SHADECALC" eval -p mediump "exp2(float($x))")" = "$value" ] || same=0
 done <"$e2e_tmp/rows.csv"
 verdict "mediump rows equal eval" test $same = 1
+# the rows run in blocks, a loop whose trip count depends on the row under a mask: each row as
+# `eval` computes it alone
+loop='float s = 1.0; for (int i = 0; i < int(x); i++) { if (s > 4.0) break; s = s * 1.5 + x; } s'
+sweep --var x=0:9:37 "$loop" | tail -n +2 >"$e2e_tmp/rows.csv"
+same=1
+while IFS=, read -r x value; do
+    [ "$("$SHADECALC" eval -D "x=float($x)" "$loop")" = "$value" ] || same=0
+done <"$e2e_tmp/rows.csv"
+verdict "divergent rows equal eval" test $same = 1
+expect "runtime error names the row" 2 'x,value
+0,0
+0.25,0.25
+0.5,0.5' "error: sweep: row 4: column 20: index 3 is out of range 0..2" -- sweep --var x=0:1:5 'vec3 v = vec3(x); v[int(x * 4.0)]'
+expect "GLSL ES: no int beside a float" 2 '' "~sweep: 'x * 2': column 3: operator '*': operands float and int do not match (GLSL ES converts nothing implicitly: write a float literal (1.0, not 1)" -- sweep --var x=0:1:3 'x * 2'
+expect "an int result" 2 '' "error: sweep: 'int(x)' is of type int: the result columns are floats (convert it: float(...), vec2(...) ...)" -- sweep --var x=0:1:3 'int(x)'
 
 # $r in a light spec against `shadecalc shade` with the value written in (the issue's example)
 light='point pos=0,0,$r I=1 atten=window rstart=1 rend=10'

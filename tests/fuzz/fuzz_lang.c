@@ -1,6 +1,9 @@
 /* libFuzzer harness: the language's compiler and interpreter (shadecalc/lang.h) must accept or
  * reject any program without crashing, leaking, reading out of bounds or hanging, in every
- * precision (loops are bounded by a small iteration limit). */
+ * precision (loops are bounded by a small iteration limit); and block execution
+ * (sc_program_run_block) must give every value of every element as runs of one element give
+ * it, bit for bit (NaN for NaN), and stop at the same element: a difference aborts. */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +22,55 @@ static int check_value(void *user, const char *text, int len, int line, const sc
 static void ignore_domain(void *user, int line, int column, const char *func, const char *rule)
 {
     (void)user, (void)line, (void)column, (void)func, (void)rule;
+}
+
+/* ---- block execution against one element at a time ---- */
+
+enum { ELEMENTS = 3 };
+
+static const double xs[ELEMENTS] = {0.5, -1.25, 3.0};
+static const double vs[3][ELEMENTS] = {{1, 0, 2}, {-2, 0.5, 2}, {3, -4, 2}}; /* v's columns */
+
+typedef struct {
+    int value, seen;
+    double out[16];
+} one_value;
+
+static int keep(void *user, const char *text, int len, int line, const sc_lvalue *v)
+{
+    one_value *o = user;
+    (void)text, (void)len, (void)line;
+    if (o->seen++ == o->value)
+        memcpy(o->out, v->v, (size_t)sc_ltype_size(v->type) * sizeof(double));
+    return 0;
+}
+
+static int same(double a, double b) { return (isnan(a) && isnan(b)) || memcmp(&a, &b, 8) == 0; }
+
+static void compare_value(const sc_program *prog, sc_prec p, int value)
+{
+    double cols[16][ELEMENTS];
+    double *out[16];
+    for (int k = 0; k < 16; k++)
+        out[k] = cols[k];
+    const double *in[4] = {xs, vs[0], vs[1], vs[2]};
+    sc_lang_block job = {p, ELEMENTS, in, value, out, NULL, NULL};
+    sc_lang_error err;
+    long ran = sc_program_run_block(prog, &job, &err), first_failed = ELEMENTS;
+    for (int e = 0; e < ELEMENTS; e++) {
+        sc_lvalue values[2] = {{{SC_KIND_FLOAT, 1, 1}, {xs[e]}},
+                               {{SC_KIND_FLOAT, 1, 3}, {vs[0][e], vs[1][e], vs[2][e]}}};
+        one_value o = {value, 0, {0}};
+        if (sc_program_run(prog, p, values, keep, ignore_domain, &o, &err) < 0) {
+            first_failed = first_failed < e ? first_failed : e;
+            continue;
+        }
+        for (int k = 0; k < sc_ltype_size(sc_program_value_type(prog, value)); k++)
+            if (!same(o.out[k], cols[k][e]))
+                abort();
+    }
+    if (ran != first_failed)
+        abort();
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -41,6 +93,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     0 &&
                 err.message[0] == '\0')
                 abort();
+        for (int p = SC_DOUBLE; p <= SC_LOWP; p++)
+            for (int v = 0; v < sc_program_values(prog) && v < 8; v++)
+                compare_value(prog, (sc_prec)p, v);
         sc_program_free(prog);
     } else if (err.line < 0 || err.column < 0 || err.message[0] == '\0') {
         abort();

@@ -268,6 +268,18 @@ static int eval_poly(void *user, int worker, const double *vars, double *results
     return 0;
 }
 
+/* The same through eval_block: count rows at once, the index of the first that fails. */
+static int eval_poly_block(void *user, int worker, int count, const double *vars, double *results,
+                           char *e, size_t size)
+{
+    for (int i = 0; i < count; i++)
+        if (eval_poly(user, worker, vars + 2 * i, results + i, e, size) < 0)
+            return i;
+    return count;
+}
+
+static int use_blocks; /* run_to_text gives the runner eval_block instead of eval */
+
 static int consume_in_order(void *user, uint64_t row, const double *vars, const double *results,
                             char *e, size_t size)
 {
@@ -286,7 +298,9 @@ static char *run_to_text(const sc_sweep_grid *g, int threads, runner_state *s,
     char *text = NULL;
     size_t size = 0;
     FILE *out = open_memstream(&text, &size);
-    sc_sweep_job job = {g, 1, eval_poly, s, consume_in_order, &t, out, NULL, threads};
+    sc_sweep_job job = {
+        g,    1,       use_blocks ? NULL : eval_poly,      s, consume_in_order, &t, out,
+        NULL, threads, use_blocks ? eval_poly_block : NULL};
     /* eval and consume share the state: eval only reads fail_at */
     *status = sc_sweep_run(&job, err, sizeof err);
     fclose(out);
@@ -338,6 +352,37 @@ static void a_failing_row_stops_after_the_rows_before_it(void **state)
     sc_sweep_grid_free(&g);
 }
 
+/* eval_block gives the same text, and a failing row stops the sweep after the rows before it
+ * with the same message, on one thread and on three. */
+static void rows_in_blocks_equal_rows_one_by_one(void **state)
+{
+    (void)state;
+    sc_sweep_grid g;
+    grid_of(&g, (const char *const[]){"x=0:999:1000", "y=0,1"}, 2);
+    for (int threads = 1; threads <= 3; threads += 2) {
+        for (double fail_at = -1; fail_at <= 700; fail_at += 701) {
+            runner_state rows = {.fail_at = fail_at}, blocks = {.fail_at = fail_at};
+            sc_sweep_status s_rows, s_blocks;
+            use_blocks = 0;
+            char *a = run_to_text(&g, threads, &rows, &s_rows), row_err[sizeof err];
+            memcpy(row_err, err, sizeof err);
+            use_blocks = 1;
+            char *b = run_to_text(&g, threads, &blocks, &s_blocks);
+            use_blocks = 0;
+            assert_int_equal(s_rows, fail_at < 0 ? SC_SWEEP_OK : SC_SWEEP_FAILED);
+            assert_int_equal(s_blocks, s_rows);
+            assert_string_equal(a, b);
+            assert_int_equal(blocks.next_row, rows.next_row);
+            assert_false(blocks.out_of_order);
+            if (fail_at >= 0)
+                assert_string_equal(err, row_err);
+            free(a);
+            free(b);
+        }
+    }
+    sc_sweep_grid_free(&g);
+}
+
 static void write_errors_are_reported(void **state)
 {
     (void)state;
@@ -349,7 +394,7 @@ static void write_errors_are_reported(void **state)
     static const char *const names[] = {"x", "y", "value"};
     sc_sweep_table t = {SC_SWEEP_CSV, SC_DOUBLE, names, 2, 1};
     runner_state s = {.fail_at = -1};
-    sc_sweep_job job = {&g, 1, eval_poly, &s, NULL, &t, full, NULL, 2};
+    sc_sweep_job job = {&g, 1, eval_poly, &s, NULL, &t, full, NULL, 2, NULL};
     assert_int_equal(sc_sweep_run(&job, err, sizeof err), SC_SWEEP_WRITE_ERROR);
     fclose(full);
     sc_sweep_grid_free(&g);
@@ -383,7 +428,7 @@ static void memory_does_not_grow_with_rows(void **state)
     sc_sweep_grid small, large; /* integers: quick to print */
     grid_of(&small, (const char *const[]){"x=0:9999:10000", "y=0"}, 2);
     grid_of(&large, (const char *const[]){"x=0:299999:300000", "y=0"}, 2);
-    sc_sweep_job job = {&small, 1, eval_poly, &s, NULL, &t, null, NULL, 2};
+    sc_sweep_job job = {&small, 1, eval_poly, &s, NULL, &t, null, NULL, 2, NULL};
     assert_int_equal(sc_sweep_run(&job, err, sizeof err), SC_SWEEP_OK); /* warms the heap */
     long before = peak_rss_kb();
     job.grid = &large;
@@ -499,6 +544,7 @@ int main(void)
         cmocka_unit_test(image_reads_back_with_values_and_ranges),
         cmocka_unit_test(image_channels_follow_the_results),
         cmocka_unit_test(log_range_is_described),
+        cmocka_unit_test(rows_in_blocks_equal_rows_one_by_one),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
