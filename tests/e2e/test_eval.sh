@@ -51,7 +51,9 @@ expect "acosh domain warning"     0 'nan' '~acosh: x < 1 is outside the GLSL ES 
 expect "atanh pole"               0 '-inf' '~atanh: |x| >= 1 is outside the GLSL ES domain' -- eval 'atanh(-1.0)'
 expect "round halves to even"     0 'vec4(2, -2, 4, -0)' '' -- eval 'round(vec4(2.5, -2.5, 3.5, -0.3))'
 expect "roundEven and trunc"      0 'vec3(2, -2, 0)' '' -- eval 'vec3(roundEven(1.5), trunc(-2.7), trunc(0.9))'
-expect "modf is not a function"   2 '' "error: column 1: unknown function 'modf' (did you mean 'mod'?)" -- eval 'modf(1.5)'
+expect "modf fraction"            0 '-0.75' '' -- eval 'float i; modf(-2.75, i)'
+expect "modf whole part"          0 '-2' '' -- eval 'float i; modf(-2.75, i); i'
+expect "modf needs its out i"     2 '' "error: column 1: modf takes (x, out i) of one type, float or vecN; not (float, ...)" -- eval 'modf(1.5)'
 
 # output formats
 expect "hex highp"                0 '0x3fb504f3' '' -- eval --hex 'pow(2.0, 0.5)'
