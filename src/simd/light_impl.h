@@ -532,7 +532,7 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
     void K(name)(const sc_batch_args *a);                                                          \
     void K(name)(const sc_batch_args *a)                                                           \
     {                                                                                              \
-        static void (*const loops[])(const sc_batch_args *, const brdf_uniforms *) = {            \
+        static void (*const loops[])(const sc_batch_args *, const brdf_uniforms *) = {             \
             brdf_lambert_##tier##_loop,     brdf_phong_##tier##_loop,                              \
             brdf_blinn_phong_##tier##_loop, brdf_ward_##tier##_loop,                               \
             brdf_oren_nayar_##tier##_loop,  brdf_cook_torrance_##tier##_loop};                     \

@@ -59,7 +59,7 @@ static SC_INLINE vf own_specular(int tier, int nt, sc_lobe lobe, const shade_vec
 {
     v3 h = v3_add(l, v);
     vf hh = vf_max(v3_dot(h, h), vf_set1(FLT_MIN)); /* l = −v: h = 0 */
-    if (lobe == SC_LOBE_BLINN) { /* RTR3 §7.6 */
+    if (lobe == SC_LOBE_BLINN) {                    /* RTR3 §7.6 */
         /* n·h = (n·l + n·v)/|h|, floored at 2^-40 */
         vf nh = vf_max(vf_mul(vf_add(nl, nv), tier_rsqrt(nt, hh)), vf_set1(0x1p-40f));
         const sc_shade_uniforms *s = c->s;
@@ -150,8 +150,8 @@ static SC_INLINE v3 v3_select(vm m, v3 a, v3 b)
 /* acc + E cos θ_i ⊙ f(l, v) for one light; lobe is a constant at each call. Unlit lanes drop
  * f: it may be ∞ or NaN there. */
 static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, light_shape shape,
-                               const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v,
-                               vf nv, const float *const *in, size_t i, v3 acc)
+                               const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v, vf nv,
+                               const float *const *in, size_t i, v3 acc)
 {
     int nt = tier == FAST8 ? FAST12 : tier;
     vf falloff, zero = vf_set1(0.0f);
@@ -198,8 +198,7 @@ static SC_INLINE void shade_tier(int tier, sc_lobe lobe, light_shape shape, int 
                              in, i, acc);
         }
     for (int k = 0; k < count; k++) /* a constant count: unrolled */
-        acc = light_term(tier, lobe, c, shape, &s->lights[k], &c->lights[k], n, v, nv, in, i,
-                         acc);
+        acc = light_term(tier, lobe, c, shape, &s->lights[k], &c->lights[k], n, v, nv, in, i, acc);
     v3_store(acc, out, i);
 }
 
@@ -223,8 +222,8 @@ static SC_INLINE void shade_run(const sc_batch_args *a, int count, lane_n_fn lan
     }                                                                                              \
     static void name(const sc_batch_args *a) { shade_run(a, 0, name##_lane); }
 #define SHADE_FIXED_LANE(name, tier, lobe, si, count)                                              \
-    static SC_INLINE void name##_##si##_##count##_lane(const float *const *in,                     \
-                                                       float *const *out, size_t i, const void *c) \
+    static SC_INLINE void name##_##si##_##count##_lane(const float *const *in, float *const *out,  \
+                                                       size_t i, const void *c)                    \
     {                                                                                              \
         static const light_shape shapes[] = {{SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE},                \
                                              {SC_LIGHT_POINT, SC_ATTEN_INVERSE_SQUARE}};           \
