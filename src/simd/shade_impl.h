@@ -131,21 +131,12 @@ static SC_INLINE vf tier_pow(int tier, vf x, vf y)
  * (2^-17 at 64 for the accurate tier's 2^-15, 2^-15 at 256 for the fast tiers). */
 enum { POW_INT_MAX_ACCURATE = 64, POW_INT_MAX_FAST = 256 };
 
-/* x^m, m >= 1 the same in every lane: ceil(log2 m) squarings and popcount(m) products (Knuth
- * TAOCP 4.6.3), m = 32 five squarings. x below `cutoff` = 2^(−100/m) gives 0, as lobe_pow_fast
+/* x^m, m >= 1 the same in every lane, by binary powering (vf_pow_uint, src/simd/spot_impl.h):
+ * m = 32 five squarings. x below `cutoff` = 2^(−100/m) gives 0, as lobe_pow_fast
  * flushes below 2^-100, so that no power or product is subnormal (a microcode assist). */
 static SC_INLINE vf pow_int(vf x, unsigned m, vf cutoff)
 {
-    x = vf_select(vf_lt(x, cutoff), vf_set1(0.0f), x);
-    vf r = vf_set1(1.0f);
-    for (;;) {
-        if (m & 1u)
-            r = vf_mul(r, x);
-        m >>= 1;
-        if (!m)
-            return r;
-        x = vf_mul(x, x);
-    }
+    return vf_pow_uint(vf_select(vf_lt(x, cutoff), vf_set1(0.0f), x), m);
 }
 
 /* ---- vec3 ---- */
