@@ -53,18 +53,23 @@ $(BUILD)/obj/src/simd/sse41/%.o: ISAFLAGS := -msse4.1
 $(BUILD)/obj/src/simd/avx512/%.o: ISAFLAGS := -mavx512f -mavx512dq -mfma
 $(BUILD)/obj/bench/sleef_avx2.o: ISAFLAGS := -mavx2 -mfma
 $(BUILD)/obj/bench/peak_avx2.o: ISAFLAGS := -mavx2 -mfma
+$(BUILD)/obj/bench/fastmath_%_avx2.o: ISAFLAGS = $(FASTMATH_AVX2)
 endif
 
 # The plain loops of bench/libm_loops.c again as a user who tries -O3 -march=native -ffast-math
 # gets them, by gcc and by clang when each is installed, whatever CC is (peer rows of
-# `shadecalc bench`); not
+# `shadecalc bench`), and with -mavx2 -mfma (x86-64: the peers of the AVX2 tiers); not
 # instrumented by the sanitizers, whose runtimes differ between the two compilers.
 FASTMATH ?= -O3 -march=native -ffast-math -ffp-contract=fast
+FASTMATH_AVX2 := -O3 -mavx2 -mfma -ffast-math -ffp-contract=fast
 $(BUILD)/obj/bench/fastmath_%.o: ISAFLAGS := $(FASTMATH)
 $(BUILD)/obj/bench/fastmath_%.o: SANFLAGS :=
-$(BUILD)/obj/bench/fastmath_gcc.o: override CC := $(if $(shell command -v gcc),gcc,$(CC))
-$(BUILD)/obj/bench/fastmath_clang.o: override CC := $(if $(shell command -v clang),clang,$(CC))
-$(BUILD)/obj/bench/report.o: CPPFLAGS += -DSC_BENCH_FLAGS='"$(OPT) $(FPFLAGS); peers $(FASTMATH)"'
+$(BUILD)/obj/bench/fastmath_gcc.o $(BUILD)/obj/bench/fastmath_gcc_avx2.o: \
+    override CC := $(if $(shell command -v gcc),gcc,$(CC))
+$(BUILD)/obj/bench/fastmath_clang.o $(BUILD)/obj/bench/fastmath_clang_avx2.o: \
+    override CC := $(if $(shell command -v clang),clang,$(CC))
+$(BUILD)/obj/bench/report.o: CPPFLAGS += \
+    -DSC_BENCH_FLAGS='"$(OPT) $(FPFLAGS); peers $(FASTMATH), $(FASTMATH_AVX2)"'
 
 # SLEEF (libsleef-dev) is optional: when found, `shadecalc bench` also times its AVX2 functions.
 # NO_SLEEF=1 builds as if it were absent (the tests must pass either way).

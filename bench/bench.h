@@ -16,6 +16,9 @@ sc_batch_fn bench_libm_loop(const char *kernel);
  * (bench/fastmath_*.c); NULL if none, or if that compiler was not installed at build time. */
 sc_batch_fn bench_fast_gcc_loop(const char *kernel);
 sc_batch_fn bench_fast_clang_loop(const char *kernel);
+/* The same built with -O3 -mavx2 -mfma -ffast-math (rows "gcc-fast-avx2", "clang-fast-avx2"). */
+sc_batch_fn bench_fast_gcc_avx2_loop(const char *kernel);
+sc_batch_fn bench_fast_clang_avx2_loop(const char *kernel);
 
 /* ---- SLEEF's AVX2 functions (bench/sleef_avx2.c; optional, built when SLEEF is found) ---- */
 
@@ -67,7 +70,9 @@ typedef struct bench_row {
     double roofline_fraction;    /* roofline_ns / ns_per_elem */
     int pareto;                  /* not beaten in both error and speed among the kernel's rows */
     const struct bench_row *dominated_by; /* a tier's first peer row (libm, gcc-fast,
-                                            clang-fast, SLEEF) no slower and no less accurate */
+                                            clang-fast, SLEEF) no slower and no less accurate,
+                                            built for the tier's instruction set or below */
+    sc_isa peer_isa; /* a peer row: the instruction set it is built for (libm: scalar) */
 } bench_row;
 
 typedef struct {

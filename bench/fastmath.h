@@ -1,6 +1,6 @@
-/* The plain loops of bench/libm_loops.c as one compiler builds them with -O3 -march=native
- * -ffast-math (peer rows of `shadecalc bench`), included by bench/fastmath_gcc.c and
- * bench/fastmath_clang.c, which the Makefile compiles with that compiler and those flags.
+/* The plain loops of bench/libm_loops.c as one compiler builds them with -O3 (-march=native, or
+ * -mavx2 -mfma) -ffast-math (peer rows of `shadecalc bench`), included by bench/fastmath_*.c,
+ * which the Makefile compiles with that compiler and those flags.
  * Each defines BENCH_LOOPS_LOOKUP (its lookup's name) and, when the compiler is the one it is
  * named after, BENCH_FAST_COMPILER; otherwise (that compiler not installed) it has no loops. */
 #include "bench/bench.h"

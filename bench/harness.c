@@ -351,13 +351,17 @@ static void measure_entry(bench_state *st, const sc_batch_entry *e, bench_data *
     progress(st, what);
 }
 
-/* A plain loop a user would write instead (isa "libm", "gcc-fast", "clang-fast"; tier "loop") */
+/* A plain loop a user would write instead (isa "libm", "gcc-fast", "clang-fast"; tier "loop"),
+ * built for instruction set `built` */
 static void measure_loop(bench_state *st, const sc_batch_entry *accurate, bench_data *d,
-                         const char *scene_name, const char *isa, sc_batch_fn loop)
+                         const char *scene_name, const char *isa, sc_isa built, sc_batch_fn loop)
 {
-    bench_row *r = loop ? add_row(st, accurate->kernel, isa, "loop", scene_name, d->n) : NULL;
+    bench_row *r = loop && sc_isa_supported(built)
+                       ? add_row(st, accurate->kernel, isa, "loop", scene_name, d->n)
+                       : NULL;
     if (!r)
         return;
+    r->peer_isa = built;
     sc_batch_args a = data_args(d);
     time_fn(loop, &a, st->o, r);
     accuracy(loop, accurate, d, r);
@@ -365,21 +369,36 @@ static void measure_loop(bench_state *st, const sc_batch_entry *accurate, bench_
     progress(st, isa);
 }
 
-/* The plain loops of a kernel: -O2 (the libm baseline), then -O3 -march=native -ffast-math by
- * gcc and by clang when the build had them. */
+/* The plain loops of a kernel: -O2 (the libm baseline), then -O3 -ffast-math by gcc and by clang
+ * when the build had them, with -march=native (the best instruction set of this CPU: NATIVE)
+ * and with -mavx2 -mfma. */
+enum { NATIVE = -1 };
 static const struct {
     const char *isa;
+    int built; /* sc_isa, or NATIVE */
     sc_batch_fn (*lookup)(const char *kernel);
-} plain_loops[] = {{"libm", bench_libm_loop},
-                   {"gcc-fast", bench_fast_gcc_loop},
-                   {"clang-fast", bench_fast_clang_loop}};
+} plain_loops[] = {{"libm", SC_ISA_SCALAR, bench_libm_loop},
+                   {"gcc-fast", NATIVE, bench_fast_gcc_loop},
+                   {"clang-fast", NATIVE, bench_fast_clang_loop},
+                   {"gcc-fast-avx2", SC_ISA_AVX2, bench_fast_gcc_avx2_loop},
+                   {"clang-fast-avx2", SC_ISA_AVX2, bench_fast_clang_avx2_loop}};
 enum { N_PLAIN = (int)(sizeof plain_loops / sizeof plain_loops[0]) };
+
+/* The best instruction set of this CPU: what -march=native builds for */
+static sc_isa best_isa(void)
+{
+    int i = SC_ISA_COUNT - 1;
+    while (i > 0 && !sc_isa_supported((sc_isa)i))
+        i--;
+    return (sc_isa)i;
+}
 
 static int plain_loop_count(const char *kernel)
 {
     int n = 0;
     for (int i = 0; i < N_PLAIN; i++)
-        n += plain_loops[i].lookup(kernel) != NULL;
+        n += plain_loops[i].lookup(kernel) != NULL &&
+             (plain_loops[i].built == NATIVE || sc_isa_supported((sc_isa)plain_loops[i].built));
     return n;
 }
 
@@ -392,6 +411,7 @@ static void measure_sleef(bench_state *st, const sc_batch_entry *accurate, bench
         bench_row *r = add_row(st, accurate->kernel, "sleef-avx2", loops[i].tier, "", d->n);
         if (!r)
             return;
+        r->peer_isa = SC_ISA_AVX2;
         sc_batch_args a = data_args(d);
         time_fn(loops[i].fn, &a, st->o, r);
         accuracy(loops[i].fn, accurate, d, r);
@@ -423,7 +443,9 @@ static int no_worse(const bench_row *a, const bench_row *b)
 }
 
 /* Pareto set of rows [first, end), peers included: not beaten in both max ULP and time by
- * another row; and for each tier, the first peer row that dominates it. */
+ * another row; and for each tier, the first peer row that dominates it among those built for
+ * the tier's instruction set or an older one: a loop built with AVX-512 beats an AVX2 tier
+ * only on the CPUs where the AVX-512 tier runs instead. */
 static void pareto(bench_row *rows, int first, int end)
 {
     for (int i = first; i < end; i++) {
@@ -435,7 +457,8 @@ static void pareto(bench_row *rows, int first, int end)
             int better = a->err.max_ulp < b->err.max_ulp || a->ns_per_elem < b->ns_per_elem;
             if (j != i && no_worse(a, b) && better)
                 b->pareto = 0;
-            if (b->entry && !a->entry && no_worse(a, b) && !b->dominated_by)
+            if (b->entry && !a->entry && a->peer_isa <= b->entry->isa && no_worse(a, b) &&
+                !b->dominated_by)
                 b->dominated_by = a;
         }
     }
@@ -456,6 +479,7 @@ static int measure_group(bench_state *st, const char *kernel, const bench_scene 
             measure_entry(st, &sc_batch_table[i], &d, scene_name);
     for (int i = 0; i < N_PLAIN; i++)
         measure_loop(st, accurate, &d, scene_name, plain_loops[i].isa,
+                     plain_loops[i].built == NATIVE ? best_isa() : (sc_isa)plain_loops[i].built,
                      plain_loops[i].lookup(accurate->kernel));
     measure_sleef(st, accurate, &d);
     speedups(st->rows, first, st->n_rows, accurate->tier);

@@ -514,9 +514,14 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
                                                 size_t i, const void *u)                           \
     {                                                                                              \
         brdf_lane(tier, model_##model, in, out, i, u);                                             \
+    }                                                                                              \
+    static void brdf_##model##_##tier##_loop(const sc_batch_args *a, const brdf_uniforms *u)       \
+    {                                                                                              \
+        brdf_uniforms local = *u; /* not aliased by the output stores: kept in registers */        \
+        run_uniforms(a, 9, 3, brdf_##model##_##tier, &local);                                      \
     }
-/* One loop per model, chosen once per call (the sc_brdf's kind), so that each is
- * straight-line. */
+/* One loop per model, chosen once per call (the sc_brdf's kind), the lane inlined into it, so
+ * that each is straight-line. */
 #define BRDF_KERNEL(name, tier)                                                                    \
     BRDF_LANE(lambert, tier)                                                                       \
     BRDF_LANE(phong, tier)                                                                         \
@@ -527,12 +532,13 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
     void K(name)(const sc_batch_args *a);                                                          \
     void K(name)(const sc_batch_args *a)                                                           \
     {                                                                                              \
-        static const lane_n_fn lanes[] = {brdf_lambert_##tier,     brdf_phong_##tier,              \
-                                          brdf_blinn_phong_##tier, brdf_ward_##tier,               \
-                                          brdf_oren_nayar_##tier,  brdf_cook_torrance_##tier};     \
+        static void (*const loops[])(const sc_batch_args *, const brdf_uniforms *) = {             \
+            brdf_lambert_##tier##_loop,     brdf_phong_##tier##_loop,                              \
+            brdf_blinn_phong_##tier##_loop, brdf_ward_##tier##_loop,                               \
+            brdf_oren_nayar_##tier##_loop,  brdf_cook_torrance_##tier##_loop};                     \
         brdf_uniforms u;                                                                           \
         sc_uniforms_brdf(a->params, &u);                                                           \
-        run_uniforms(a, 9, 3, lanes[u.model], &u);                                                 \
+        loops[u.model](a, &u);                                                                     \
     }
 BRDF_KERNEL(brdf_bits16, ACCURATE)
 BRDF_KERNEL(brdf_bits12, FAST12)

@@ -5,36 +5,81 @@
  * directional light costs no distance, falloff or spot factor, a point light no spot factor, a
  * lambert scene no specular lobe. */
 
-/* The kernel's own lobes for one light (n, v, l unit): normalized or plain Blinn-Phong
- * k (n·h)^m, and GGX with Smith height-correlated masking and Schlick's Fresnel (grey F0).
- * nt is the tier of the normalizations. */
-static SC_INLINE vf own_specular(int tier, int nt, sc_lobe lobe, const sc_shade_uniforms *s, v3 n,
-                                 v3 v, v3 l, vf nl, vf nv)
+/* The uniforms of one light as vectors: its direction or position, its colour E_L (the BRDF
+ * models), and E_L ⊙ c_diff/π and E_L ⊙ c_spec (the kernel's own lobes). */
+typedef struct {
+    v3 dir, pos, color, diff, spec;
+} light_vecs;
+
+static SC_INLINE v3 v3_mul(v3 a, v3 b)
+{
+    return (v3){vf_mul(a.x, b.x), vf_mul(a.y, b.y), vf_mul(a.z, b.z)};
+}
+
+/* spec carries the lobe's constant factor: k of Blinn-Phong, α²/(2π) of GGX (own_specular). */
+static SC_INLINE light_vecs light_vecs_of(const sc_shade_uniforms *s, const sc_light_uniforms *lt)
+{
+    float k = s->lobe == SC_LOBE_GGX ? s->alpha * s->alpha * (0.5f * inv_pi_f) : s->lobe_k;
+    float spec[3] = {s->spec[0] * k, s->spec[1] * k, s->spec[2] * k};
+    v3 color = v3_set1(lt->color);
+    return (light_vecs){v3_set1(lt->dir), v3_set1(lt->pos), color,
+                        v3_mul(color, v3_set1(s->diff_pi)), v3_mul(color, v3_set1(spec))};
+}
+
+/* A plan's uniforms as vectors, broadcast once per call into the kernel's own frame, where the
+ * output stores cannot alias them: the loop keeps them in registers (or reads them from the
+ * stack as operands) instead of broadcasting each one for every vector. `lights`: the lights of
+ * a straight-line variant. */
+typedef struct {
+    const sc_shade_uniforms *s;
+    v3 amb;
+    vf m, cutoff;                    /* blinn-phong */
+    vf a2, a2m1, one_a2, f0, one_f0; /* ggx: α², α² − 1, 1 − α², F0, 1 − F0 */
+    light_vecs lights[SC_SHADE_FIXED_MAX];
+} shade_vecs;
+
+static SC_INLINE void shade_vecs_make(const sc_shade_uniforms *s, int count, shade_vecs *c)
+{
+    float a2 = s->alpha * s->alpha;
+    c->s = s;
+    c->amb = v3_set1(s->amb_term);
+    c->m = vf_set1(s->m), c->cutoff = vf_set1(s->lobe_cutoff);
+    c->a2 = vf_set1(a2), c->a2m1 = vf_set1(a2 - 1.0f), c->one_a2 = vf_set1(1.0f - a2);
+    c->f0 = vf_set1(s->f0), c->one_f0 = vf_set1(1.0f - s->f0);
+    for (int k = 0; k < count; k++)
+        c->lights[k] = light_vecs_of(s, &s->lights[k]);
+}
+
+/* The kernel's own lobes for one light (n, v, l unit; nl = n·l, nv = n·v) without their
+ * constant factor (light_vecs_of): normalized or plain Blinn-Phong (n·h)^m, and GGX with Smith
+ * height-correlated masking and Schlick's Fresnel (grey F0). nt is the tier of the
+ * normalizations. */
+static SC_INLINE vf own_specular(int tier, int nt, sc_lobe lobe, const shade_vecs *c, v3 v, v3 l,
+                                 vf nl, vf nv)
 {
     v3 h = v3_add(l, v);
-    vf inv_h = tier_rsqrt(nt, vf_max(v3_dot(h, h), vf_set1(FLT_MIN))); /* l = −v: h = 0 */
-    /* n·h floored at 2^-40, not at 0: its square (GGX) must not underflow (a microcode assist) */
-    vf nh = vf_max(vf_mul(v3_dot(n, h), inv_h), vf_set1(0x1p-40f));
-    if (lobe == SC_LOBE_BLINN) { /* RTR3 §7.6 */
+    vf hh = vf_max(v3_dot(h, h), vf_set1(FLT_MIN)); /* l = −v: h = 0 */
+    if (lobe == SC_LOBE_BLINN) {                    /* RTR3 §7.6 */
+        /* n·h = (n·l + n·v)/|h|, floored at 2^-40 */
+        vf nh = vf_max(vf_mul(vf_add(nl, nv), tier_rsqrt(nt, hh)), vf_set1(0x1p-40f));
+        const sc_shade_uniforms *s = c->s;
         unsigned m = tier == ACCURATE && s->lobe_m > POW_INT_MAX_ACCURATE ? 0u : s->lobe_m;
-        vf lobe_v = m ? pow_int(nh, m, vf_set1(s->lobe_cutoff)) : tier_pow(tier, nh, vf_set1(s->m));
-        return vf_mul(vf_set1(s->lobe_k), lobe_v);
+        return m ? pow_int(nh, m, c->cutoff) : tier_pow(tier, nh, c->m);
     }
-    /* GGX D = α² / (π (n·h² (α² − 1) + 1)²); V = G2/(4 n·l n·v) for Smith height-correlated
-     * = 1 / (2 (n·l √(n·v² (1 − α²) + α²) + n·v √(n·l² (1 − α²) + α²))) (Heitz 2014 eq. 99);
-     * F = F0 + (1 − F0)(1 − v·h)^5 (Schlick 1994). */
-    vf a2 = vf_set1(s->alpha * s->alpha), one_a2 = vf_set1(1.0f - s->alpha * s->alpha);
-    vf d = vf_fma(vf_mul(nh, nh), vf_sub(a2, vf_set1(1.0f)), vf_set1(1.0f));
-    vf D = vf_mul(vf_mul(a2, vf_set1(inv_pi_f)), tier_rcp(tier, vf_mul(d, d)));
-    vf gv = vf_mul(nl, tier_sqrt(tier, vf_fma(vf_mul(nv, nv), one_a2, a2)));
-    vf gl = vf_mul(nv, tier_sqrt(tier, vf_fma(vf_mul(nl, nl), one_a2, a2)));
-    vf V = tier_rcp(tier, vf_mul(vf_set1(2.0f), vf_add(gv, gl)));
-    vf vh = vf_max(vf_mul(v3_dot(v, h), inv_h), vf_set1(0.0f));
-    vf c = vf_sub(vf_set1(1.0f), vh); /* below 2^-24, c^5 (< 2^-120) would turn subnormal */
-    c = vf_select(vf_lt(c, vf_set1(0x1p-24f)), vf_set1(0.0f), c);
-    vf c2 = vf_mul(c, c);
-    vf F = vf_fma(vf_set1(1.0f - s->f0), vf_mul(vf_mul(c2, c2), c), vf_set1(s->f0));
-    return vf_mul(vf_mul(D, V), F);
+    /* GGX D = α² / (π d²), d = n·h² (α² − 1) + 1; V = G2/(4 n·l n·v) for Smith height-correlated
+     * = 1 / (2 (g_v + g_l)), g_v = n·l √(n·v² (1 − α²) + α²), g_l = n·v √(n·l² (1 − α²) + α²)
+     * (Heitz 2014 eq. 99): D V = α²/(2π) / (d² (g_v + g_l)), one reciprocal.
+     * F = F0 + (1 − F0) b^5, b = 1 − v·h (Schlick 1994), floored at 2^-24 so that b^5 is no
+     * subnormal (F moves by 2^-120 at most). With −1/|h|, b is one FMA; n·h only squared. */
+    vf neg_inv_h = tier_neg_rsqrt(nt, hh);
+    vf nh = vf_mul(vf_add(nl, nv), neg_inv_h);
+    vf d = vf_fma(vf_mul(nh, nh), c->a2m1, vf_set1(1.0f));
+    vf gv = vf_mul(nl, tier_sqrt(tier, vf_fma(vf_mul(nv, nv), c->one_a2, c->a2)));
+    vf gl = vf_mul(nv, tier_sqrt(tier, vf_fma(vf_mul(nl, nl), c->one_a2, c->a2)));
+    vf dv = tier_rcp(tier, vf_mul(vf_mul(d, d), vf_add(gv, gl)));
+    vf b = vf_max(vf_fma(v3_dot(v, h), neg_inv_h, vf_set1(1.0f)), vf_set1(0x1p-24f));
+    vf b2 = vf_mul(b, b);
+    return vf_mul(dv, vf_fma(c->one_f0, vf_mul(vf_mul(b2, b2), b), c->f0));
 }
 
 /* Any BRDF model of the BRDF kernel (src/simd/light_impl.h), chosen by the uniforms. */
@@ -76,13 +121,14 @@ static SC_INLINE vf falloff_of(int tier, light_shape shape, const sc_light_unifo
 /* Direction to a light and its irradiance factor: 1 (directional), or f_d times the spot
  * factor; at the light itself (r = 0) l = n, as light.h has it. */
 static SC_INLINE v3 light_dir(int tier, int nt, light_shape shape, const sc_light_uniforms *lt,
-                              v3 n, const float *const *in, size_t i, vf *falloff)
+                              const light_vecs *lv, v3 n, const float *const *in, size_t i,
+                              vf *falloff)
 {
     if (shape.kind == SC_LIGHT_DIRECTIONAL) {
         *falloff = vf_set1(1.0f);
-        return v3_set1(lt->dir);
+        return lv->dir;
     }
-    v3 d = v3_sub(v3_set1(lt->pos), v3_load(in, 6, i));
+    v3 d = v3_sub(lv->pos, v3_load(in, 6, i));
     vf r2 = v3_dot(d, d);
     *falloff = falloff_of(tier, shape, lt, r2);
     v3 l = v3_normalize_dd(nt, d, r2);
@@ -90,7 +136,7 @@ static SC_INLINE v3 light_dir(int tier, int nt, light_shape shape, const sc_ligh
     l = (v3){vf_select(at_light, n.x, l.x), vf_select(at_light, n.y, l.y),
              vf_select(at_light, n.z, l.z)};
     if (shape.kind == SC_LIGHT_SPOT) {
-        vf cos_s = vf_sub(vf_set1(0.0f), v3_dot(l, v3_set1(lt->dir)));
+        vf cos_s = vf_sub(vf_set1(0.0f), v3_dot(l, lv->dir));
         *falloff = vf_mul(*falloff, spot_factor(tier, lt->spot, cos_s, &lt->spot_u));
     }
     return l;
@@ -101,30 +147,33 @@ static SC_INLINE v3 v3_select(vm m, v3 a, v3 b)
     return (v3){vf_select(m, a.x, b.x), vf_select(m, a.y, b.y), vf_select(m, a.z, b.z)};
 }
 
-/* acc + f(l, v) ⊙ E cos θ_i for one light; lobe is a constant at each call. Unlit lanes drop
+/* acc + E cos θ_i ⊙ f(l, v) for one light; lobe is a constant at each call. Unlit lanes drop
  * f: it may be ∞ or NaN there. */
-static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const sc_shade_uniforms *s,
-                               light_shape shape, const sc_light_uniforms *lt, v3 n, v3 v, vf nv,
+static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, light_shape shape,
+                               const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v, vf nv,
                                const float *const *in, size_t i, v3 acc)
 {
     int nt = tier == FAST8 ? FAST12 : tier;
     vf falloff, zero = vf_set1(0.0f);
-    v3 l = light_dir(tier, nt, shape, lt, n, in, i, &falloff);
+    v3 l = light_dir(tier, nt, shape, lt, lv, n, in, i, &falloff);
     vf nl = v3_dot(n, l);
     vm lit = vm_and(vf_lt(zero, nl), vf_lt(zero, nv));
     vf w = vf_select(lit, vf_mul(nl, falloff), zero); /* cos θ_i · falloff */
-    v3 f = v3_set1(s->diff_pi);
     if (lobe == SC_LOBE_MODEL) {
-        brdf_geometry g = brdf_geometry_make(nt, &s->brdf, n, l, v);
-        f = v3_select(lit, brdf_colour(&s->brdf, any_model(tier, &s->brdf, &g)),
-                      (v3){zero, zero, zero});
-    } else if (lobe != SC_LOBE_NONE) {
-        vf sp = vf_select(lit, own_specular(tier, nt, lobe, s, n, v, l, nl, nv), zero);
-        v3 ks = v3_set1(s->spec);
-        f = (v3){vf_fma(ks.x, sp, f.x), vf_fma(ks.y, sp, f.y), vf_fma(ks.z, sp, f.z)};
+        const sc_brdf_uniforms *bu = &c->s->brdf;
+        brdf_geometry g = brdf_geometry_make(nt, bu, n, l, v);
+        v3 f = v3_select(lit, brdf_colour(bu, any_model(tier, bu, &g)), (v3){zero, zero, zero});
+        v3 e = v3_scale(lv->color, w);
+        return (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
     }
-    v3 e = v3_scale(v3_set1(lt->color), w);
-    return (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
+    /* w (E ⊙ c_diff/π) + w f_s (E ⊙ c_spec) */
+    acc = (v3){vf_fma(w, lv->diff.x, acc.x), vf_fma(w, lv->diff.y, acc.y),
+               vf_fma(w, lv->diff.z, acc.z)};
+    if (lobe == SC_LOBE_NONE)
+        return acc;
+    vf ws = vf_select(lit, vf_mul(w, own_specular(tier, nt, lobe, c, v, l, nl, nv)), zero);
+    return (v3){vf_fma(ws, lv->spec.x, acc.x), vf_fma(ws, lv->spec.y, acc.y),
+                vf_fma(ws, lv->spec.z, acc.z)};
 }
 
 /* The shading equation for one vector of elements: count < 0, the generic loop over all the
@@ -133,38 +182,56 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const sc_shade_uniforms *
  * the lights' terms independent for the out-of-order core to overlap. */
 static SC_INLINE void shade_tier(int tier, sc_lobe lobe, light_shape shape, int count,
                                  const float *const *in, float *const *out, size_t i,
-                                 const sc_shade_uniforms *s)
+                                 const shade_vecs *c)
 {
+    const sc_shade_uniforms *s = c->s;
     int nt = tier == FAST8 ? FAST12 : tier;
-    v3 n = v3_normalize(nt, v3_load(in, 0, i)), v = v3_normalize(nt, v3_load(in, 3, i));
+    v3 n = v3_load(in, 0, i), v = v3_load(in, 3, i);
+    v3_normalize2(nt, &n, &v);
     vf nv = v3_dot(n, v);
-    v3 acc = v3_set1(s->amb_term);
+    v3 acc = c->amb;
     if (count < 0)
         for (int k = 0; k < s->n_lights; k++) {
             const sc_light_uniforms *lt = &s->lights[k];
-            acc = light_term(tier, lobe, s, (light_shape){lt->kind, lt->atten}, lt, n, v, nv, in, i,
-                             acc);
+            light_vecs lv = light_vecs_of(s, lt);
+            acc = light_term(tier, lobe, c, (light_shape){lt->kind, lt->atten}, lt, &lv, n, v, nv,
+                             in, i, acc);
         }
     for (int k = 0; k < count; k++) /* a constant count: unrolled */
-        acc = light_term(tier, lobe, s, shape, &s->lights[k], n, v, nv, in, i, acc);
+        acc = light_term(tier, lobe, c, shape, &s->lights[k], &c->lights[k], n, v, nv, in, i, acc);
     v3_store(acc, out, i);
 }
 
-/* A lane of the generic loop, and one of a fixed shape: count lights of shape index `si`
+/* The loop of one lane, the lane inlined into it: count lights in the plan's vectors. */
+static SC_INLINE void shade_run(const sc_batch_args *a, int count, lane_n_fn lane)
+{
+    const sc_shade_uniforms *s = sc_batch_plan_uniforms(a->params);
+    shade_vecs c;
+    shade_vecs_make(s, count, &c);
+    run_uniforms(a, 9, 3, lane, &c);
+}
+
+/* A loop of the generic lane, and one of a fixed shape: count lights of shape index `si`
  * (src/simd/uniforms.h: 0 directional, 1 point with inverse-square falloff). */
 #define SHADE_LANE(name, tier, lobe)                                                               \
-    static SC_INLINE void name(const float *const *in, float *const *out, size_t i, const void *u) \
+    static SC_INLINE void name##_lane(const float *const *in, float *const *out, size_t i,         \
+                                      const void *c)                                               \
     {                                                                                              \
         shade_tier(tier, lobe, (light_shape){SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE}, -1, in, out, i, \
-                   u);                                                                             \
-    }
+                   c);                                                                             \
+    }                                                                                              \
+    static void name(const sc_batch_args *a) { shade_run(a, 0, name##_lane); }
 #define SHADE_FIXED_LANE(name, tier, lobe, si, count)                                              \
-    static SC_INLINE void name##_##si##_##count(const float *const *in, float *const *out,         \
-                                                size_t i, const void *u)                           \
+    static SC_INLINE void name##_##si##_##count##_lane(const float *const *in, float *const *out,  \
+                                                       size_t i, const void *c)                    \
     {                                                                                              \
         static const light_shape shapes[] = {{SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE},                \
                                              {SC_LIGHT_POINT, SC_ATTEN_INVERSE_SQUARE}};           \
-        shade_tier(tier, lobe, shapes[si], count, in, out, i, u);                                  \
+        shade_tier(tier, lobe, shapes[si], count, in, out, i, c);                                  \
+    }                                                                                              \
+    static void name##_##si##_##count(const sc_batch_args *a)                                      \
+    {                                                                                              \
+        shade_run(a, count, name##_##si##_##count##_lane);                                         \
     }
 #define SHADE_FIXED_LANES(name, tier, lobe)                                                        \
     SHADE_LANE(name, tier, lobe)                                                                   \
@@ -191,12 +258,12 @@ static SC_INLINE void shade_tier(int tier, sc_lobe lobe, light_shape shape, int 
     void K(name)(const sc_batch_args *a);                                                          \
     void K(name)(const sc_batch_args *a)                                                           \
     {                                                                                              \
-        static const lane_n_fn lanes[][SC_SHADE_VARIANTS] = {SHADE_VARIANTS(name##_none),          \
-                                                             SHADE_VARIANTS(name##_blinn),         \
-                                                             SHADE_VARIANTS(name##_ggx),           \
-                                                             {name##_model}};                      \
+        static const sc_batch_fn loops[][SC_SHADE_VARIANTS] = {SHADE_VARIANTS(name##_none),        \
+                                                               SHADE_VARIANTS(name##_blinn),       \
+                                                               SHADE_VARIANTS(name##_ggx),         \
+                                                               {name##_model}};                    \
         const sc_shade_uniforms *u = sc_batch_plan_uniforms(a->params);                            \
-        run_uniforms(a, 9, 3, lanes[u->lobe][u->variant], u);                                      \
+        loops[u->lobe][u->variant](a);                                                             \
     }
 SHADE_KERNEL(shade_accurate, ACCURATE)
 SHADE_KERNEL(shade_bits12, FAST12)

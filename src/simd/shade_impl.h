@@ -69,6 +69,16 @@ static SC_INLINE vf tier_rsqrt(int tier, vf x)
     return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
 }
 
+/* −1/√x: the sign folded into the Newton step (FAST12), or into the division */
+static SC_INLINE vf tier_neg_rsqrt(int tier, vf x)
+{
+    if (tier == ACCURATE)
+        return vf_div(vf_set1(-1.0f), vf_sqrt(x));
+    if (tier == FAST12)
+        return rsqrt_newton_signed(x, -1.0f);
+    return vf_sub(vf_set1(0.0f), tier_rsqrt(tier, x));
+}
+
 static SC_INLINE vf tier_rcp(int tier, vf x)
 {
     if (tier == ACCURATE)
@@ -121,21 +131,12 @@ static SC_INLINE vf tier_pow(int tier, vf x, vf y)
  * (2^-17 at 64 for the accurate tier's 2^-15, 2^-15 at 256 for the fast tiers). */
 enum { POW_INT_MAX_ACCURATE = 64, POW_INT_MAX_FAST = 256 };
 
-/* x^m, m >= 1 the same in every lane: ceil(log2 m) squarings and popcount(m) products (Knuth
- * TAOCP 4.6.3), m = 32 five squarings. x below `cutoff` = 2^(−100/m) gives 0, as lobe_pow_fast
+/* x^m, m >= 1 the same in every lane, by binary powering (vf_pow_uint, src/simd/spot_impl.h):
+ * m = 32 five squarings. x below `cutoff` = 2^(−100/m) gives 0, as lobe_pow_fast
  * flushes below 2^-100, so that no power or product is subnormal (a microcode assist). */
 static SC_INLINE vf pow_int(vf x, unsigned m, vf cutoff)
 {
-    x = vf_select(vf_lt(x, cutoff), vf_set1(0.0f), x);
-    vf r = vf_set1(1.0f);
-    for (;;) {
-        if (m & 1u)
-            r = vf_mul(r, x);
-        m >>= 1;
-        if (!m)
-            return r;
-        x = vf_mul(x, x);
-    }
+    return vf_pow_uint(vf_select(vf_lt(x, cutoff), vf_set1(0.0f), x), m);
 }
 
 /* ---- vec3 ---- */
@@ -176,15 +177,9 @@ static SC_INLINE v3 v3_set1(const float *c)
     return (v3){vf_set1(c[0]), vf_set1(c[1]), vf_set1(c[2])};
 }
 
-/* a / |a| given dd = a·a. The zero vector stays zero (dd is taken at least 2^-149); lanes
- * whose dd overflowed are scaled by 2^-100 first (rare: a branch, not a cost on every vector). */
-static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
+/* a / |a| given dd = a·a finite. The zero vector stays zero (dd is taken at least 2^-149). */
+static SC_INLINE v3 v3_unit_dd(int tier, v3 a, vf dd)
 {
-    vm big = vf_eq(dd, vf_set1(INFINITY));
-    if (vm_any(big)) {
-        a = v3_scale(a, vf_select(big, vf_set1(0x1p-100f), vf_set1(1.0f)));
-        dd = v3_dot(a, a);
-    }
     dd = vf_max(dd, vf_set1(0x1p-149f));
     if (tier == ACCURATE) {
         vf len = vf_sqrt(dd);
@@ -193,7 +188,30 @@ static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
     return v3_scale(a, tier_rsqrt(tier, dd));
 }
 
+/* a / |a| given dd = a·a; lanes whose dd overflowed are scaled by 2^-100 first (rare: a
+ * branch, not a cost on every vector). */
+static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
+{
+    vm big = vf_eq(dd, vf_set1(INFINITY));
+    if (vm_any(big)) {
+        a = v3_scale(a, vf_select(big, vf_set1(0x1p-100f), vf_set1(1.0f)));
+        dd = v3_dot(a, a);
+    }
+    return v3_unit_dd(tier, a, dd);
+}
+
 static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
+
+/* Two vectors normalized with one test for the rare overflowed lanes of either. */
+static SC_INLINE void v3_normalize2(int tier, v3 *a, v3 *b)
+{
+    vf da = v3_dot(*a, *a), db = v3_dot(*b, *b), inf = vf_set1(INFINITY);
+    if (vm_any(vm_or(vf_eq(da, inf), vf_eq(db, inf)))) {
+        *a = v3_normalize_dd(tier, *a, da), *b = v3_normalize_dd(tier, *b, db);
+        return;
+    }
+    *a = v3_unit_dd(tier, *a, da), *b = v3_unit_dd(tier, *b, db);
+}
 
 static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i, const void *p)
 {

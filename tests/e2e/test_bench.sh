@@ -79,6 +79,10 @@ assert "libm" in isas and "scalar" in isas, isas
 assert "sleef" in doc, "SLEEF's version (or null) in the metadata"
 if doc["sleef"] is None:
     assert doc["sleef_absent"], "why there are no SLEEF rows"
+level = {"scalar": 0, "sse4.1": 1, "avx2": 2, "avx512": 3}
+native = max(level[r["isa"]] for r in rows if r["isa"] in level)  # -march=native peers
+def peer_level(p):
+    return 0 if p["isa"] == "libm" else 2 if p["isa"].endswith("avx2") else native
 for r in rows:
     assert r["max_ulp"] >= 0 and r["not_correctly_rounded"] >= 0, r
     dom = r["dominated_by"]
@@ -87,7 +91,9 @@ for r in rows:
         peer = [p for p in rows if p["kernel"] == r["kernel"] and p["n"] == r["n"] and
                 (p["isa"] + ("" if p["tier"] == "loop" else " " + p["tier"])) == dom]
         assert peer and peer[0]["ns_per_elem"] <= r["ns_per_elem"] and peer[0]["max_ulp"] <= r["max_ulp"], (r, peer)
-    if r["isa"] in ("libm", "gcc-fast", "clang-fast", "sleef-avx2"):
+        # judged only by peers built for its instruction set or an older one
+        assert peer_level(peer[0]) <= level[r["isa"]], (r, peer)
+    if r["tier"] == "loop" or r["isa"].startswith("sleef"):
         assert dom is None, r
 base = [r for r in rows if r["isa"] == "scalar" and r["tier"] == "u1"]
 for r in rows:

@@ -307,6 +307,25 @@ static void spot_edges(void **state)
     check_function("spot_smoothstep", &p, 1.0, points, n, "0..90");
 }
 
+/* Integer exponents, raised by binary powering in double (src/simd/spot_impl.h): every tier
+ * within its bound up to the largest such exponent, and just past it (the tiers' pow); cones
+ * narrow enough that no result inside underflows. */
+static void spot_integer_exponents(void **state)
+{
+    (void)state;
+    static const struct {
+        double exponent, cutoff;
+    } cases[] = {{1, 60}, {2, 60}, {5, 60}, {64, 60}, {1024, 5}, {1025, 5}};
+    for (int k = 0; k < (int)(sizeof cases / sizeof cases[0]); k++) {
+        sc_spot p = {.exponent = cases[k].exponent, .cutoff = cases[k].cutoff};
+        float edge = (float)cos(p.cutoff * pi / 180.0);
+        const float points[] = {edge, nextafterf(edge, 2.0f), 0x1.fffffep-1f, 1.0f};
+        char what[64];
+        snprintf(what, sizeof what, "exponent %g", p.exponent);
+        check_function("spot_opengl", &p, 1.0, points, 4, what);
+    }
+}
+
 static void spot_by_hand(void **state)
 {
     (void)state;
@@ -739,6 +758,7 @@ int main(void)
         cmocka_unit_test(plans_refuse_with_reasons),
         cmocka_unit_test(fixed_variants_match_the_loop),
         cmocka_unit_test(one_plan_many_threads),
+        cmocka_unit_test(spot_integer_exponents),
     };
     return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);
 }
