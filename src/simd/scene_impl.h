@@ -101,12 +101,19 @@ static SC_INLINE v3 v3_select(vm m, v3 a, v3 b)
     return (v3){vf_select(m, a.x, b.x), vf_select(m, a.y, b.y), vf_select(m, a.z, b.z)};
 }
 
+/* acc + an area light's term (src/simd/area_impl.h, included after this file) */
+static SC_INLINE v3 area_term(int tier, sc_lobe lobe, const sc_shade_uniforms *s,
+                              sc_light_kind kind, const sc_light_uniforms *lt, v3 n, v3 v, vf nv,
+                              const float *const *in, size_t i, v3 acc);
+
 /* acc + f(l, v) ⊙ E cos θ_i for one light; lobe is a constant at each call. Unlit lanes drop
  * f: it may be ∞ or NaN there. */
 static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const sc_shade_uniforms *s,
                                light_shape shape, const sc_light_uniforms *lt, v3 n, v3 v, vf nv,
                                const float *const *in, size_t i, v3 acc)
 {
+    if (shape.kind >= SC_LIGHT_SPHERE)
+        return area_term(tier, lobe, s, shape.kind, lt, n, v, nv, in, i, acc);
     int nt = tier == FAST8 ? FAST12 : tier;
     vf falloff, zero = vf_set1(0.0f);
     v3 l = light_dir(tier, nt, shape, lt, n, in, i, &falloff);
