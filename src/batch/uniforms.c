@@ -342,8 +342,7 @@ static void ltc_uniforms_of(const sc_brdf *b, sc_shade_uniforms *u)
 /* An area light (u's lobe already set): method=point as the point light of its stand-in;
  * representative-point with the kernel's own lobes; ltc with the BRDFs it applies to;
  * method=reference refused. */
-static int area_uniforms_of(const sc_scene *s, int k, sc_shade_uniforms *u, char *why,
-                            size_t size)
+static int area_uniforms_of(const sc_scene *s, int k, sc_shade_uniforms *u, char *why, size_t size)
 {
     const sc_light *l = &s->lights[k];
     const char *kind = area_kinds[l->kind - SC_LIGHT_SPHERE];
@@ -361,8 +360,8 @@ static int area_uniforms_of(const sc_scene *s, int k, sc_shade_uniforms *u, char
                       "or point)",
                       k + 1, kind);
     if (method != SC_AREA_REPRESENTATIVE && method != SC_AREA_LTC)
-        return refuse(why, size, "light %d: area method %d not covered by the batch kernels",
-                      k + 1, (int)method);
+        return refuse(why, size, "light %d: area method %d not covered by the batch kernels", k + 1,
+                      (int)method);
     if (sc_area_method_applies(l->kind, method, &s->model.brdf, msg, sizeof msg) != 0)
         return refuse(why, size, "light %d: %s %s", k + 1, kind, msg);
     if (method == SC_AREA_REPRESENTATIVE && u->lobe == SC_LOBE_MODEL)

@@ -61,8 +61,8 @@ static SC_INLINE vf sphere_irradiance(vf ct, vf d, vf R)
 /* The irradiance of a sphere light, or a tube's (its cylinder as a line of width 2R, Karis
  * 2013, plus its ends as one ball at its centre), on a plane of unit normal w at the point,
  * over L_e; π inside the ball about the centre. c: centre − point, dc its length. */
-static SC_INLINE vf area_irradiance(sc_light_kind kind, const sc_area_uniforms *a, v3 w,
-                                    v3 c, vf dc, v3 p)
+static SC_INLINE vf area_irradiance(sc_light_kind kind, const sc_area_uniforms *a, v3 w, v3 c,
+                                    vf dc, v3 p)
 {
     vf R = vf_set1(a->radius), zero = vf_set1(0.0f);
     vm inside = vf_le(dc, R);
@@ -84,8 +84,7 @@ static SC_INLINE vf area_irradiance(sc_light_kind kind, const sc_area_uniforms *
 /* The point of the tube's axis (the sphere's centre) closest to the ray along r, relative
  * to the point: t = −(L0·Ld⊥)/|r × Ld|², Ld⊥ = Ld − (r·Ld) r, clamped to [0, 1]; ½ for a ray
  * along the axis. */
-static SC_INLINE v3 closest_centre(sc_light_kind kind, const sc_area_uniforms *a, v3 r,
-                                   v3 c, v3 p)
+static SC_INLINE v3 closest_centre(sc_light_kind kind, const sc_area_uniforms *a, v3 r, v3 c, v3 p)
 {
     if (kind != SC_LIGHT_TUBE)
         return c;
@@ -113,8 +112,8 @@ static SC_INLINE vf energy_normalisation(sc_lobe lobe, const sc_shade_uniforms *
 
 /* L_e ⊙ (c_diff/π E(n) + c_spec f_s(l_s) N E(l_s) cos̄θ_s), 0 where n·v <= 0. */
 static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const sc_shade_uniforms *s,
-                                        sc_light_kind kind, const sc_light_uniforms *lt, v3 n,
-                                        v3 v, vf nv, v3 p)
+                                        sc_light_kind kind, const sc_light_uniforms *lt, v3 n, v3 v,
+                                        vf nv, v3 p)
 {
     int nt = tier == FAST8 ? FAST12 : tier;
     const sc_area_uniforms *a = &lt->area;
@@ -144,7 +143,8 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const sc_shade_u
     }
     vm seen = vf_lt(zero, nv);
     v3 e = v3_set1(lt->color);
-    return (v3){vf_select(seen, vf_mul(e.x, out.x), zero), vf_select(seen, vf_mul(e.y, out.y), zero),
+    return (v3){vf_select(seen, vf_mul(e.x, out.x), zero),
+                vf_select(seen, vf_mul(e.y, out.y), zero),
                 vf_select(seen, vf_mul(e.z, out.z), zero)};
 }
 
@@ -157,8 +157,7 @@ static SC_INLINE vf edge_term(v3 a, v3 b)
     v3 c = v3_cross(a, b);
     vf s = area_length(v3_dot(c, c));
     vf theta = area_angle(s, v3_dot(a, b));
-    return vf_select(vf_lt(vf_set1(0.0f), s), vf_mul(c.z, area_ratio(theta, s)),
-                     vf_set1(0.0f));
+    return vf_select(vf_lt(vf_set1(0.0f), s), vf_mul(c.z, area_ratio(theta, s)), vf_set1(0.0f));
 }
 
 /* Lambert's edge sum of a convex polygon clipped to z >= 0, accumulated edge by edge, with
@@ -237,7 +236,8 @@ static SC_INLINE void view_frame(int nt, v3 n, v3 v, vf nv, v3 axes[3])
 {
     v3 x = v3_sub(v, v3_scale(n, nv));
     vf xx = v3_dot(x, x);
-    axes[0] = v3_select(vf_lt(xx, vf_set1(0x1p-40f)), tangent_of(nt, n), v3_normalize_dd(nt, x, xx));
+    axes[0] = v3_select(vf_lt(xx, vf_set1(0x1p-40f)), tangent_of(nt, n),
+                        v3_normalize_dd(nt, x, xx));
     axes[1] = v3_cross(n, axes[0]);
     axes[2] = n;
 }
@@ -270,9 +270,10 @@ static SC_INLINE void ltc_sums(const float *ring, int sides, v3 q, v3 e1, v3 e2,
         a = b;
     }
     /* the horizon edge of the first clip, through the second */
-    first.sum = vf_add(first.sum, vf_select(first.crossed, edge_term(first.exit, first.entry), zero));
-    vm seg2 = clip_edge(ltc_carry(m, first.exit), ltc_carry(m, first.entry), first.crossed,
-                        &second, &c2, &d2);
+    first.sum = vf_add(first.sum,
+                       vf_select(first.crossed, edge_term(first.exit, first.entry), zero));
+    vm seg2 = clip_edge(ltc_carry(m, first.exit), ltc_carry(m, first.entry), first.crossed, &second,
+                        &c2, &d2);
     second.sum = vf_add(second.sum, vf_select(seg2, edge_term(c2, d2), zero));
     second.sum = vf_add(second.sum,
                         vf_select(second.crossed, edge_term(second.exit, second.entry), zero));
@@ -313,9 +314,11 @@ static SC_INLINE v3 ltc_term(int tier, const sc_shade_uniforms *s, sc_light_kind
        kd = v3_set1(s->diff_pi);
     v3 spec = {vf_fma(sa.x, m[4], vf_mul(sb.x, m[5])), vf_fma(sa.y, m[4], vf_mul(sb.y, m[5])),
                vf_fma(sa.z, m[4], vf_mul(sb.z, m[5]))};
-    v3 out = {vf_fma(kd.x, cosine, vf_mul(spec.x, share)), vf_fma(kd.y, cosine, vf_mul(spec.y, share)),
+    v3 out = {vf_fma(kd.x, cosine, vf_mul(spec.x, share)),
+              vf_fma(kd.y, cosine, vf_mul(spec.y, share)),
               vf_fma(kd.z, cosine, vf_mul(spec.z, share))};
-    return (v3){vf_select(seen, vf_mul(e.x, out.x), zero), vf_select(seen, vf_mul(e.y, out.y), zero),
+    return (v3){vf_select(seen, vf_mul(e.x, out.x), zero),
+                vf_select(seen, vf_mul(e.y, out.y), zero),
                 vf_select(seen, vf_mul(e.z, out.z), zero)};
 }
 
@@ -337,7 +340,7 @@ static SC_INLINE v3 area_term(int tier, sc_lobe lobe, const sc_shade_uniforms *s
 #define AREA_LANE(name, tier, lobe, kind)                                                          \
     static SC_INLINE void name(const float *const *in, float *const *out, size_t i, const void *u) \
     {                                                                                              \
-        shade_tier(tier, lobe, (light_shape){kind, SC_ATTEN_NONE}, 1, in, out, i, u);             \
+        shade_tier(tier, lobe, (light_shape){kind, SC_ATTEN_NONE}, 1, in, out, i, u);              \
     }
 
 static SC_INLINE void area_kernel(const sc_batch_args *a, sc_light_kind kind,

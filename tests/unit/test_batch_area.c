@@ -102,8 +102,7 @@ static void check_kernel(const char *kernel, buffers *b, const char *what)
             size_t w = acc.worst;
             fail_msg("%s %s (%s): %.3g× the bound at p = (%a, %a, %a): %a against %a", kernel,
                      sc_isa_name(e->isa), what, acc.max_ratio, (double)b->in[6][w],
-                     (double)b->in[7][w], (double)b->in[8][w], (double)b->out[0][w],
-                     b->ref[4 * w]);
+                     (double)b->in[7][w], (double)b->in[8][w], (double)b->out[0][w], b->ref[4 * w]);
         }
     }
 }
@@ -322,14 +321,16 @@ static void plans_accept_and_refuse(void **state)
     static const char *const accepted[][2] = {
         {"sphere center=0,2,0 radius=0.5 method=representative-point", "blinn-phong"},
         {"tube p0=0,2,0 p1=1,2,0 radius=0.1 method=representative-point", "lambert"},
-        {"disk center=0,2,0 normal=0,-1,0 radius=0.5 method=ltc", "cook-torrance D=ggx G=smith-correlated"},
+        {"disk center=0,2,0 normal=0,-1,0 radius=0.5 method=ltc",
+         "cook-torrance D=ggx G=smith-correlated"},
         {"rect center=0,2,0 edge1=1,0,0 edge2=0,0,1 method=ltc", "lambert"},
         {"rect center=0,2,0 edge1=1,0,0 edge2=0,0,1 method=point", "ward"},
         {"tube p0=0,2,0 p1=1,2,0 radius=0.1 method=point", "phong"}};
     /* each refusal names the light, its method and what the kernels take instead */
     static const char *const refused[][3] = {
         {"sphere center=0,2,0 radius=0.5", "lambert", "method=reference"},
-        {"disk center=0,2,0 normal=0,-1,0 radius=0.5 method=reference", "lambert", "shade and check"},
+        {"disk center=0,2,0 normal=0,-1,0 radius=0.5 method=reference", "lambert",
+         "shade and check"},
         {"sphere center=0,2,0 radius=0.5 method=representative-point", "phong",
          "representative-point with brdf phong"},
         {"rect center=0,2,0 edge1=1,0,0 edge2=0,0,1 method=ltc", "blinn-phong", "method=ltc"}};
@@ -338,7 +339,10 @@ static void plans_accept_and_refuse(void **state)
     for (size_t k = 0; k < sizeof accepted / sizeof accepted[0]; k++) {
         scene_of(&s, accepted[k][0], accepted[k][1]);
         for (int t = 0; t < 3; t++) {
-            sc_batch_plan *plan = plan_of(&s, t == 0 ? "accurate" : t == 1 ? "bits12" : "bits8",
+            sc_batch_plan *plan = plan_of(&s,
+                                          t == 0   ? "accurate"
+                                          : t == 1 ? "bits12"
+                                                   : "bits8",
                                           why, sizeof why);
             if (!plan)
                 fail_msg("%s with %s: %s", accepted[k][0], accepted[k][1], why);
@@ -383,8 +387,8 @@ static void plans_shade_as_the_kernels(void **state)
             const sc_batch_entry *e = sc_batch_find(kernels[k], "accurate", (sc_isa)isa);
             if (!sc_isa_supported((sc_isa)isa))
                 continue;
-            sc_batch_plan *plan =
-                sc_batch_plan_compile(scenes[k], "accurate", (sc_isa)isa, why, sizeof why);
+            sc_batch_plan *plan = sc_batch_plan_compile(scenes[k], "accurate", (sc_isa)isa, why,
+                                                        sizeof why);
             if (!plan)
                 fail_msg("%s: %s", kernels[k], why);
             buffers_alloc(&b, N, scenes[k]);
