@@ -204,24 +204,18 @@ const sc_brdf sc_batch_test_brdf = {.kind = SC_BRDF_COOK_TORRANCE,
 
 /* cook-torrance walter, GGX α 0.3, Smith height-correlated, Schlick with F0 f0 */
 #define AREA_GGX(...)                                                                              \
-    {.kind = SC_BRDF_COOK_TORRANCE,                                                               \
-     .form = SC_CT_WALTER,                                                                        \
-     .D = SC_D_GGX,                                                                               \
-     .G = SC_G_SMITH_CORRELATED,                                                                  \
-     .F = SC_F_SCHLICK,                                                                           \
-     .diff = {0.8, 0.5, 0.2},                                                                     \
-     .spec = {1.0, 1.0, 1.0},                                                                     \
-     .f0 = {__VA_ARGS__},                                                                         \
-     .m = 32.0,                                                                                   \
-     .ax = 0.3,                                                                                   \
-     .ay = 0.3,                                                                                   \
-     .ior = 1.5}
+    {                                                                                              \
+        .kind = SC_BRDF_COOK_TORRANCE, .form = SC_CT_WALTER, .D = SC_D_GGX,                        \
+        .G = SC_G_SMITH_CORRELATED, .F = SC_F_SCHLICK, .diff = {0.8, 0.5, 0.2},                    \
+        .spec = {1.0, 1.0, 1.0}, .f0 = {__VA_ARGS__}, .m = 32.0, .ax = 0.3, .ay = 0.3, .ior = 1.5  \
+    }
 #define AREA_LIGHT(k, m, x, y, z, ...)                                                             \
-    {.kind = k,                                                                                   \
-     .pos = {x, y, z},                                                                            \
-     .intensity = {2.0, 1.5, 1.0},                                                                \
-     .range = HUGE_VAL,                                                                           \
-     .area = {.method = m, __VA_ARGS__}}
+    {                                                                                              \
+        .kind = k, .pos = {x, y, z}, .intensity = {2.0, 1.5, 1.0}, .range = HUGE_VAL, .area = {    \
+            .method = m,                                                                           \
+            __VA_ARGS__                                                                            \
+        }                                                                                          \
+    }
 
 /* Around the generator's points p in [-3, 3]^3: some inside or behind, some across the
  * horizon. */
@@ -235,7 +229,9 @@ static const sc_light area_lights[4] = {
                .edge2 = {0.0, 0.3, 1.0}, .two_sided = 1)};
 
 #define AREA_SCENE(k, brdf_init)                                                                   \
-    {&area_lights[k], 1, {.kind = SC_MODEL_BRDF, .brdf = brdf_init}, {0.0, 0.0, 0.0}}
+    {                                                                                              \
+        &area_lights[k], 1, {.kind = SC_MODEL_BRDF, .brdf = brdf_init}, { 0.0, 0.0, 0.0 }          \
+    }
 const sc_scene sc_batch_test_area_sphere = AREA_SCENE(0, AREA_GGX(0.04, 0.04, 0.04));
 const sc_scene sc_batch_test_area_tube = AREA_SCENE(1, AREA_GGX(0.04, 0.04, 0.04));
 const sc_scene sc_batch_test_area_disk = AREA_SCENE(2, AREA_GGX(0.04, 0.5, 0.9));

@@ -101,12 +101,12 @@ typedef struct {
     unsigned lobe_m;                        /* m when an integer in 1..SC_LOBE_INT_MAX, else 0 */
     float lobe_cutoff;                      /* 2^(−100/m): powers below it flush to 0 */
     sc_brdf_uniforms brdf;                  /* SC_LOBE_MODEL */
+    int variant;                            /* the kernel's variant for the scene's lights */
     /* LTC (disk and rect lights): c_spec ⊙ F0 and c_spec ⊙ (1 − F0) (0 for lambert), and the
      * table of light/ltc.h interpolated at the scene's α once: per cos θ_v row, M⁻¹'s m00,
      * m02, m11, m20, A and B */
     float ltc_sa[3], ltc_sb[3];
     float ltc_rows[SC_LTC_ROWS][SC_LTC_ROW];
-    int variant;                            /* the kernel's variant for the scene's lights */
 } sc_shade_uniforms;
 
 /* The uniforms of scene: 0, or -1 with why naming the model, light or form the kernels do not
