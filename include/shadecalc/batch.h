@@ -86,7 +86,13 @@ typedef struct sc_batch_plan sc_batch_plan;
  *                                        out: r g b (f; 0 below the horizon)
  *                                        params: sc_brdf, any model, form and roughness; the
  *                                        tangent frame of anisotropic α is sc_frame_make's
- *                                        from n alone */
+ *                                        from n alone
+ *   area_sphere area_tube area_disk      nx ny nz vx vy vz px py pz, as shade
+ *   area_rect                            out: r g b   params: an sc_scene of one area light of
+ *                                        that kind by its approximation (representative-point:
+ *                                        sphere, tube; ltc: disk, rect), whose uniforms each
+ *                                        call computes (the plans' area lanes; NaN outputs for
+ *                                        a scene the kernels do not cover) */
 typedef struct {
     const float *in[9];
     float *out[3];
@@ -164,9 +170,14 @@ int sc_batch_run(const char *kernel, const char *tier, const sc_batch_args *a);
  * otherwise. NULL with the reason in why when the kernels do not cover the scene,
  * naming the model, light or form:
  *   - a legacy model (ads, opengl, direct3d9): the kernels compute the BRDF models only;
- *   - a light of another kind than directional, point and spot ("light 2: light kind 4 not
- *     covered by the batch kernels"), or with a range (direct3d9);
+ *   - a light of a kind the kernels do not know ("light 2: light kind 9 not covered by the
+ *     batch kernels"), or with a range (direct3d9);
+ *   - an area light of method=reference (shade and check evaluate it), or by a method the
+ *     scene's BRDF does not allow (representative-point takes lambert, blinn-phong and the
+ *     kernel's own GGX; ltc what sc_area_method_applies allows);
  *   - more than SC_BATCH_MAX_LIGHTS lights; an unknown tier; out of memory.
+ * Area lights run the generic loop: sphere and tube by the representative point, disk and rect
+ * by LTC (src/simd/area_impl.h), method=point as the point light of its stand-in.
  * Every BRDF of brdf.h is covered — lambert, phong, blinn-phong, ward, oren-nayar and
  * cook-torrance in every form, D, G and F, isotropic or anisotropic — and every attenuation
  * and spot function of light.h. The plan keeps a copy of the scene (lights included): the

@@ -109,9 +109,9 @@ static int at_hard_edge(const sc_light *lt, double cos_s)
  * inputs); out[3] the scale of the allowance: ambient plus Σ E (c_diff/π + |diffuse| +
  * specular) without the cosine (an error of ε in n·l, inevitable in float, moves the result by
  * about ε E f); +Inf (outside the stated domain) at a hard edge of a spot cone. */
-void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
+int sc_batch_shade_at(const sc_scene *s, const sc_batch_args *a, size_t i, double out[4],
+                      sc_light_terms *terms)
 {
-    const sc_scene *s = sc_batch_plan_scene(a->params);
     sc_shade_point at;
     double n[3], v[3];
     load3(a, 0, i, n);
@@ -128,12 +128,23 @@ void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
         out[3] = fmax(out[3], fabs(out[c]));
     }
     if (sc_frame_make(n, NULL, &at.frame) != 0 || vlen == 0.0)
-        return;
+        return -1;
     for (int c = 0; c < 3; c++)
         at.v[c] = v[c] / vlen;
-    sc_light_terms terms[SC_BATCH_MAX_LIGHTS];
     sc_shade_result r = {.per_light = terms};
     sc_shade(SC_DOUBLE, s, &at, &r);
+    for (int c = 0; c < 3; c++)
+        out[c] = r.L[c];
+    return 0;
+}
+
+void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
+{
+    const sc_scene *s = sc_batch_plan_scene(a->params);
+    const sc_brdf *b = &s->model.brdf;
+    sc_light_terms terms[SC_BATCH_MAX_LIGHTS];
+    if (sc_batch_shade_at(s, a, i, out, terms) != 0)
+        return;
     double scale = 0.0;
     for (int k = 0; k < s->n_lights; k++) {
         const sc_light_terms *t = &terms[k];
@@ -143,8 +154,6 @@ void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
             scale = fmax(scale, t->light.E[c] * (b->diff[c] / 3.141592653589793 +
                                                  fabs(t->brdf.diffuse[c]) + t->brdf.specular[c]));
     }
-    for (int c = 0; c < 3; c++)
-        out[c] = r.L[c];
     out[3] += scale;
 }
 

@@ -13,6 +13,12 @@
 SC_BATCH_REFS(SC_DECLARE_REF)
 /* clang-format on */
 
+/* sc_shade of scene s (double) at element i of a's n, v, p: out[0..2] the radiance, out[3]
+ * the ambient term's largest component, terms (s->n_lights of them) each light's; -1 where n
+ * or v is zero (out: the ambient term). */
+int sc_batch_shade_at(const sc_scene *s, const sc_batch_args *a, size_t i, double out[4],
+                      sc_light_terms *terms);
+
 void sc_batch_gen_pair(uint64_t *rng, float *in);    /* two vectors of magnitude 2^±8 */
 void sc_batch_gen_reflect(uint64_t *rng, float *in); /* I of magnitude 2^±8, N unit */
 void sc_batch_gen_vector(uint64_t *rng, float *in);  /* one vector of magnitude 2^±60 */

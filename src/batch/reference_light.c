@@ -95,6 +95,29 @@ void sc_batch_ref_brdf(const sc_batch_args *a, size_t i, double *out)
     }
 }
 
+/* ---- area lights: out[3] = ambient + max_c L_e (c_diff + c_spec), the radiance of an
+ * emitter that fills the hemisphere (the edge sums are sums of angles up to π) ---- */
+
+static void area_ref(const sc_batch_args *a, size_t i, double *out)
+{
+    const sc_scene *s = a->params;
+    sc_light_terms terms[1];
+    if (sc_batch_shade_at(s, a, i, out, terms) != 0)
+        return;
+    const sc_brdf *b = &s->model.brdf;
+    double scale = 0.0;
+    for (int c = 0; c < 3; c++)
+        scale = fmax(scale, s->lights[0].intensity[c] * (b->diff[c] + b->spec[c]));
+    out[3] += scale;
+}
+
+#define AREA_REF(name)                                                                             \
+    void sc_batch_ref_##name(const sc_batch_args *a, size_t i, double *out) { area_ref(a, i, out); }
+AREA_REF(area_sphere)
+AREA_REF(area_tube)
+AREA_REF(area_disk)
+AREA_REF(area_rect)
+
 /* ---- generator ---- */
 
 static double unit_random(uint64_t *rng) /* uniform in [−1, 1) */
@@ -178,3 +201,38 @@ const sc_brdf sc_batch_test_brdf = {.kind = SC_BRDF_COOK_TORRANCE,
                                     .ay = 0.3,
                                     .sigma = 0.5,
                                     .ior = 1.5};
+
+/* cook-torrance walter, GGX α 0.3, Smith height-correlated, Schlick with F0 f0 */
+#define AREA_GGX(...)                                                                              \
+    {                                                                                              \
+        .kind = SC_BRDF_COOK_TORRANCE, .form = SC_CT_WALTER, .D = SC_D_GGX,                        \
+        .G = SC_G_SMITH_CORRELATED, .F = SC_F_SCHLICK, .diff = {0.8, 0.5, 0.2},                    \
+        .spec = {1.0, 1.0, 1.0}, .f0 = {__VA_ARGS__}, .m = 32.0, .ax = 0.3, .ay = 0.3, .ior = 1.5  \
+    }
+#define AREA_LIGHT(k, m, x, y, z, ...)                                                             \
+    {                                                                                              \
+        .kind = k, .pos = {x, y, z}, .intensity = {2.0, 1.5, 1.0}, .range = HUGE_VAL, .area = {    \
+            .method = m,                                                                           \
+            __VA_ARGS__                                                                            \
+        }                                                                                          \
+    }
+
+/* Around the generator's points p in [-3, 3]^3: some inside or behind, some across the
+ * horizon. */
+static const sc_light area_lights[4] = {
+    AREA_LIGHT(SC_LIGHT_SPHERE, SC_AREA_REPRESENTATIVE, 0.3, 1.5, -0.2, .radius = 0.6),
+    AREA_LIGHT(SC_LIGHT_TUBE, SC_AREA_REPRESENTATIVE, 0.0, 1.4, 0.2, .radius = 0.25,
+               .p0 = {-1.0, 1.2, 0.0}, .p1 = {1.0, 1.6, 0.4}),
+    AREA_LIGHT(SC_LIGHT_DISK, SC_AREA_LTC, 0.0, 1.5, 0.0, .radius = 0.8,
+               .normal = {0.2, -1.0, 0.1}),
+    AREA_LIGHT(SC_LIGHT_RECT, SC_AREA_LTC, 0.2, 1.4, -0.1, .edge1 = {1.5, 0.0, 0.2},
+               .edge2 = {0.0, 0.3, 1.0}, .two_sided = 1)};
+
+#define AREA_SCENE(k, brdf_init)                                                                   \
+    {                                                                                              \
+        &area_lights[k], 1, {.kind = SC_MODEL_BRDF, .brdf = brdf_init}, { 0.0, 0.0, 0.0 }          \
+    }
+const sc_scene sc_batch_test_area_sphere = AREA_SCENE(0, AREA_GGX(0.04, 0.04, 0.04));
+const sc_scene sc_batch_test_area_tube = AREA_SCENE(1, AREA_GGX(0.04, 0.04, 0.04));
+const sc_scene sc_batch_test_area_disk = AREA_SCENE(2, AREA_GGX(0.04, 0.5, 0.9));
+const sc_scene sc_batch_test_area_rect = AREA_SCENE(3, AREA_GGX(0.04, 0.5, 0.9));

@@ -11,7 +11,8 @@
 /* clang-format off */
 #define SC_BATCH_REFS_LIGHT(X)                                                                    \
     X(atten_none) X(atten_invsq) X(atten_clq) X(atten_window) X(atten_pixar) X(atten_windowed)   \
-    X(spot_opengl) X(spot_directx) X(spot_smoothstep) X(brdf)
+    X(spot_opengl) X(spot_directx) X(spot_smoothstep) X(brdf) X(area_sphere) X(area_tube)         \
+    X(area_disk) X(area_rect)
 SC_BATCH_REFS_LIGHT(SC_DECLARE_REF)
 /* clang-format on */
 
@@ -25,5 +26,11 @@ extern const sc_spot sc_batch_test_spot;
 /* cook-torrance GGX, Smith height-correlated, Schlick: the model with the most terms (the
  * others are tested in tests/unit/test_batch_light.c) */
 extern const sc_brdf sc_batch_test_brdf;
+
+/* The area kernels' scenes: one light each, sphere and tube by the representative point with
+ * GGX (a grey F0: the kernel's own lobe), a one-sided disk and a two-sided rect by LTC with
+ * GGX (F0 per channel) */
+extern const sc_scene sc_batch_test_area_sphere, sc_batch_test_area_tube, sc_batch_test_area_disk,
+    sc_batch_test_area_rect;
 
 #endif

@@ -26,3 +26,15 @@ ROWS_P(spot_smoothstep, u8, 1, 1, 8, 0, 0, "-1 <= cos <= 1", COS_RANGE, 10, SPOT
 ROWS_P(brdf, bits16, 9, 3, 0, 0x1p-16, 0x1p-20, BRDF_DOM, VEC(sc_batch_gen_brdf), 80, BRDF_P)
 ROWS_P(brdf, bits12, 9, 3, 0, B12, B12, "as bits16", VEC(sc_batch_gen_brdf), 80, BRDF_P)
 ROWS_P(brdf, bits8, 9, 3, 0, B8, B8, "as bits16", VEC(sc_batch_gen_brdf), 80, BRDF_P)
+#define AREA_DOM(what)                                                                             \
+    "n, v nonzero, |n.v| >= 2^-6 |n||v|, p in [-3, 3]^3 (" what "); error against the double "     \
+    "approximation, absolute: the bound x scale, scale = max L_e (c_diff + c_spec)"
+ROWS_P(area_sphere, accurate, 9, 3, 0, 0, 0x1p-15, AREA_DOM("representative point, sphere R 0.6"),
+       VEC(sc_batch_gen_shade), 300, &sc_batch_test_area_sphere)
+ROWS_P(area_tube, accurate, 9, 3, 0, 0, 0x1p-13, AREA_DOM("representative point, tube R 0.25"),
+       VEC(sc_batch_gen_shade), 300, &sc_batch_test_area_tube)
+ROWS_P(area_disk, accurate, 9, 3, 0, 0, 0x1p-14,
+       AREA_DOM("LTC, one-sided disk R 0.8, its 64-gon; GGX alpha >= 0.1"), VEC(sc_batch_gen_shade),
+       8000, &sc_batch_test_area_disk)
+ROWS_P(area_rect, accurate, 9, 3, 0, 0, 0x1p-14, AREA_DOM("LTC, two-sided rect; GGX alpha >= 0.1"),
+       VEC(sc_batch_gen_shade), 600, &sc_batch_test_area_rect)

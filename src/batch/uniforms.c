@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "light/ltc.h"
 #include "simd/uniforms.h"
 
 static const double pi = 3.14159265358979323846;
@@ -195,7 +196,8 @@ static void unit_float(const double v[3], float out[3])
 }
 
 /* Directional, point and spot lights, with any falloff and no range (a direct3d9 setting).
- * Another kind (a new enumerator of sc_light_kind) is refused by its number. */
+ * Another kind (a new enumerator of sc_light_kind) is refused by its number (area lights:
+ * area_uniforms_of). */
 static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, char *why, size_t size)
 {
     memset(u, 0, sizeof *u);
@@ -203,14 +205,6 @@ static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, cha
     case SC_LIGHT_DIRECTIONAL:
     case SC_LIGHT_POINT:
     case SC_LIGHT_SPOT: break;
-    case SC_LIGHT_SPHERE:
-    case SC_LIGHT_TUBE:
-    case SC_LIGHT_DISK:
-    case SC_LIGHT_RECT:
-        return refuse(why, size,
-                      "light %d: area lights are not covered by the batch kernels (shade, "
-                      "sweep and check evaluate them)",
-                      k + 1);
     default:
         return refuse(why, size, "light %d: light kind %d not covered by the batch kernels", k + 1,
                       (int)l->kind);
@@ -238,6 +232,156 @@ static int light_uniforms_of(const sc_light *l, int k, sc_light_uniforms *u, cha
     sc_uniforms_atten(&l->atten, u->atten, &u->atten_u);
     if (l->kind == SC_LIGHT_SPOT)
         sc_uniforms_spot(&l->spot, u->spot, &u->spot_u);
+    return 0;
+}
+
+/* ---- area lights ---- */
+
+/* The corners centre ± edge1/2 ± edge2/2 in the order of light/area_ltc.c. */
+const float sc_area_ring_rect[2][4] = {{-0.5f, 0.5f, 0.5f, -0.5f}, {-0.5f, -0.5f, 0.5f, 0.5f}};
+/* cos and sin of 2πk/64 (printed by Python's math.cos, math.sin): the disk's polygon, as
+ * sc_ltc_disk builds it */
+/* clang-format off */
+const float sc_area_ring_disk[2][64] = {{1.0f, 0.9951847266721969f, 0.9807852804032304f, 0.9569403357322088f, 0.9238795325112867f, 0.881921264348355f, 0.8314696123025452f, 0.773010453362737f, 0.7071067811865476f, 0.6343932841636455f, 0.5555702330196023f, 0.4713967368259978f, 0.38268343236508984f, 0.29028467725446233f, 0.19509032201612833f, 0.09801714032956077f, 6.123233995736766e-17f, -0.09801714032956065f, -0.1950903220161282f, -0.29028467725446216f, -0.3826834323650897f, -0.4713967368259977f, -0.555570233019602f, -0.6343932841636454f, -0.7071067811865475f, -0.773010453362737f, -0.8314696123025453f, -0.8819212643483549f, -0.9238795325112867f, -0.9569403357322088f, -0.9807852804032304f, -0.9951847266721968f, -1.0f, -0.9951847266721969f, -0.9807852804032304f, -0.9569403357322089f, -0.9238795325112868f, -0.881921264348355f, -0.8314696123025455f, -0.7730104533627371f, -0.7071067811865477f, -0.6343932841636459f, -0.5555702330196022f, -0.47139673682599786f, -0.38268343236509034f, -0.29028467725446244f, -0.19509032201612866f, -0.09801714032956045f, -1.8369701987210297e-16f, 0.09801714032956009f, 0.1950903220161283f, 0.29028467725446205f, 0.38268343236509f, 0.4713967368259976f, 0.5555702330196018f, 0.6343932841636456f, 0.7071067811865474f, 0.7730104533627367f, 0.8314696123025452f, 0.8819212643483548f, 0.9238795325112865f, 0.9569403357322088f, 0.9807852804032303f, 0.9951847266721969f},
+                                       {0.0f, 0.0980171403295606f, 0.19509032201612825f, 0.29028467725446233f, 0.3826834323650898f, 0.47139673682599764f, 0.5555702330196022f, 0.6343932841636455f, 0.7071067811865475f, 0.773010453362737f, 0.8314696123025452f, 0.8819212643483549f, 0.9238795325112867f, 0.9569403357322089f, 0.9807852804032304f, 0.9951847266721968f, 1.0f, 0.9951847266721969f, 0.9807852804032304f, 0.9569403357322089f, 0.9238795325112867f, 0.881921264348355f, 0.8314696123025455f, 0.7730104533627371f, 0.7071067811865476f, 0.6343932841636455f, 0.5555702330196022f, 0.47139673682599786f, 0.3826834323650899f, 0.2902846772544624f, 0.1950903220161286f, 0.09801714032956083f, 1.2246467991473532e-16f, -0.09801714032956059f, -0.19509032201612836f, -0.2902846772544621f, -0.38268343236508967f, -0.47139673682599764f, -0.555570233019602f, -0.6343932841636453f, -0.7071067811865475f, -0.7730104533627367f, -0.8314696123025452f, -0.8819212643483549f, -0.9238795325112865f, -0.9569403357322088f, -0.9807852804032303f, -0.9951847266721969f, -1.0f, -0.9951847266721969f, -0.9807852804032304f, -0.9569403357322089f, -0.9238795325112866f, -0.881921264348355f, -0.8314696123025455f, -0.7730104533627369f, -0.7071067811865477f, -0.6343932841636459f, -0.5555702330196022f, -0.4713967368259979f, -0.3826834323650904f, -0.2902846772544625f, -0.19509032201612872f, -0.0980171403295605f}};
+/* clang-format on */
+
+static const char *const area_kinds[] = {"sphere", "tube", "disk", "rect"};
+
+static void to_float3(const double v[3], float out[3])
+{
+    for (int c = 0; c < 3; c++)
+        out[c] = (float)v[c];
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* The disk's polygon axes as sc_ltc_disk builds them: e1 ⊥ the axis, e2 = axis × e1, both
+ * times the radius of the 64-gon of the disk's area. */
+static void disk_axes(const sc_area *area, sc_area_uniforms *u)
+{
+    double axis[3], len = sqrt(dot3(area->normal, area->normal)), e1[3] = {0, 0, 0}, e2[3];
+    for (int c = 0; c < 3; c++)
+        axis[c] = area->normal[c] / len;
+    e1[fabs(axis[0]) < 0.9 ? 0 : 1] = 1.0;
+    double along = dot3(e1, axis);
+    for (int c = 0; c < 3; c++)
+        e1[c] -= along * axis[c];
+    double e1_len = sqrt(dot3(e1, e1));
+    for (int c = 0; c < 3; c++)
+        e1[c] /= e1_len;
+    cross3(axis, e1, e2);
+    double step = 2.0 * pi / 64.0, r = area->radius * sqrt(2.0 * pi / (64.0 * sin(step)));
+    for (int c = 0; c < 3; c++) {
+        u->e1[c] = (float)(r * e1[c]);
+        u->e2[c] = (float)(r * e2[c]);
+    }
+}
+
+static void area_geometry(const sc_light *l, sc_area_uniforms *u)
+{
+    const sc_area *a = &l->area;
+    double R = a->radius;
+    u->radius = (float)R;
+    to_float3(l->pos, u->centre);
+    to_float3(a->normal, u->normal);
+    u->two_sided = a->two_sided;
+    u->half_along = (float)R;
+    if (l->kind == SC_LIGHT_TUBE) {
+        double axis[3], centre[3];
+        for (int c = 0; c < 3; c++) {
+            axis[c] = a->p1[c] - a->p0[c];
+            centre[c] = 0.5 * (a->p0[c] + a->p1[c]);
+        }
+        double len = sqrt(dot3(axis, axis));
+        to_float3(centre, u->centre);
+        to_float3(a->p0, u->p0);
+        to_float3(axis, u->axis);
+        u->line = (float)(2.0 * R * len);
+        u->half_along = (float)(R + 0.5 * len);
+    } else if (l->kind == SC_LIGHT_RECT) {
+        double nl[3];
+        cross3(a->edge1, a->edge2, nl);
+        to_float3(nl, u->normal);
+        to_float3(a->edge1, u->e1);
+        to_float3(a->edge2, u->e2);
+    } else if (l->kind == SC_LIGHT_DISK && R > 0.0) {
+        disk_axes(a, u);
+    }
+}
+
+/* The LTC uniforms of the scene's BRDF: the colours of the specular part, and the table's
+ * rows at its α, interpolated in α as light/ltc.c's bilinear lookup does first. */
+_Static_assert(SC_LTC_ROWS == SC_LTC_SIZE && (int)SC_LTC_ROW == (int)SC_LTC_FIELDS, "the LTC rows");
+
+static void ltc_uniforms_of(const sc_brdf *b, sc_shade_uniforms *u)
+{
+    int specular = b->kind == SC_BRDF_COOK_TORRANCE;
+    for (int c = 0; c < 3; c++) {
+        double f0 = b->F == SC_F_SCHLICK ? b->f0[c] : 1.0;
+        u->ltc_sa[c] = specular ? (float)(b->spec[c] * f0) : 0.0f;
+        u->ltc_sb[c] = specular ? (float)(b->spec[c] * (1.0 - f0)) : 0.0f;
+    }
+    double alpha = specular ? b->ax : 1.0;
+    alpha = !(alpha >= SC_LTC_ALPHA_MIN) ? SC_LTC_ALPHA_MIN : alpha > 1.0 ? 1.0 : alpha;
+    double x = sqrt(alpha) * (SC_LTC_SIZE - 1);
+    int i = (int)x > SC_LTC_SIZE - 2 ? SC_LTC_SIZE - 2 : (int)x;
+    double fx = x - i;
+    for (int j = 0; j < SC_LTC_SIZE; j++)
+        for (int k = 0; k < SC_LTC_ROW; k++)
+            u->ltc_rows[j][k] = (float)(sc_ltc_table[j][i][k] +
+                                        fx * (sc_ltc_table[j][i + 1][k] - sc_ltc_table[j][i][k]));
+}
+
+/* An area light (u's lobe already set): method=point as the point light of its stand-in;
+ * representative-point with the kernel's own lobes; ltc with the BRDFs it applies to;
+ * method=reference refused. */
+static int area_uniforms_of(const sc_scene *s, int k, sc_shade_uniforms *u, char *why, size_t size)
+{
+    const sc_light *l = &s->lights[k];
+    const char *kind = area_kinds[l->kind - SC_LIGHT_SPHERE];
+    sc_area_method method = l->area.method;
+    char msg[200];
+    if (method == SC_AREA_POINT) {
+        sc_light point;
+        sc_area_stand_in(l, &point);
+        return light_uniforms_of(&point, k, &u->lights[k], why, size);
+    }
+    if (method == SC_AREA_REFERENCE)
+        return refuse(why, size,
+                      "light %d: %s method=reference is not covered by the batch kernels (shade "
+                      "and check evaluate it; the kernels take method=representative-point, ltc "
+                      "or point)",
+                      k + 1, kind);
+    if (method != SC_AREA_REPRESENTATIVE && method != SC_AREA_LTC)
+        return refuse(why, size, "light %d: area method %d not covered by the batch kernels", k + 1,
+                      (int)method);
+    if (sc_area_method_applies(l->kind, method, &s->model.brdf, msg, sizeof msg) != 0)
+        return refuse(why, size, "light %d: %s %s", k + 1, kind, msg);
+    if (method == SC_AREA_REPRESENTATIVE && u->lobe == SC_LOBE_MODEL)
+        return refuse(why, size,
+                      "light %d: %s method=representative-point with brdf %s as given is not "
+                      "covered by the batch kernels (they take lambert, blinn-phong, and "
+                      "cook-torrance walter D=ggx G=smith-correlated F=schlick with a grey f0 "
+                      "and ax = ay)",
+                      k + 1, kind, sc_brdf_kind_name(s->model.brdf.kind));
+    sc_light_uniforms *lu = &u->lights[k];
+    memset(lu, 0, sizeof *lu);
+    lu->kind = l->kind;
+    to_float3(l->intensity, lu->color);
+    area_geometry(l, &lu->area);
+    if (method == SC_AREA_LTC)
+        ltc_uniforms_of(&s->model.brdf, u);
     return 0;
 }
 
@@ -277,7 +421,9 @@ int sc_uniforms_shade(const sc_scene *s, sc_shade_uniforms *u, char *why, size_t
         return -1;
     double ambient[3] = {s->ambient[0], s->ambient[1], s->ambient[2]};
     for (int k = 0; k < s->n_lights; k++) {
-        if (light_uniforms_of(&s->lights[k], k, &u->lights[k], why, size) != 0)
+        const sc_light *l = &s->lights[k];
+        if (sc_light_is_area(l->kind) ? area_uniforms_of(s, k, u, why, size) != 0
+                                      : light_uniforms_of(l, k, &u->lights[k], why, size) != 0)
             return -1;
         for (int c = 0; c < 3; c++)
             ambient[c] += s->lights[k].ambient[c];

@@ -7,6 +7,7 @@
 #include "simd/trig_impl.h"
 #include "simd/light_impl.h"
 #include "simd/scene_impl.h"
+#include "simd/area_impl.h"
 
 BATCH1(exp2_u1, sc_exp2f)
 BATCH1(exp_u1, sc_expf)

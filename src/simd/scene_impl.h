@@ -16,10 +16,16 @@ static SC_INLINE v3 v3_mul(v3 a, v3 b)
     return (v3){vf_mul(a.x, b.x), vf_mul(a.y, b.y), vf_mul(a.z, b.z)};
 }
 
-/* spec carries the lobe's constant factor: k of Blinn-Phong, α²/(2π) of GGX (own_specular). */
+/* The constant factor own_specular leaves out: k of Blinn-Phong, α²/(2π) of GGX. */
+static SC_INLINE float lobe_factor(sc_lobe lobe, const sc_shade_uniforms *s)
+{
+    return lobe == SC_LOBE_GGX ? s->alpha * s->alpha * (0.5f * inv_pi_f) : s->lobe_k;
+}
+
+/* spec carries the lobe's constant factor (lobe_factor). */
 static SC_INLINE light_vecs light_vecs_of(const sc_shade_uniforms *s, const sc_light_uniforms *lt)
 {
-    float k = s->lobe == SC_LOBE_GGX ? s->alpha * s->alpha * (0.5f * inv_pi_f) : s->lobe_k;
+    float k = lobe_factor(s->lobe, s);
     float spec[3] = {s->spec[0] * k, s->spec[1] * k, s->spec[2] * k};
     v3 color = v3_set1(lt->color);
     return (light_vecs){v3_set1(lt->dir), v3_set1(lt->pos), color,
@@ -147,12 +153,19 @@ static SC_INLINE v3 v3_select(vm m, v3 a, v3 b)
     return (v3){vf_select(m, a.x, b.x), vf_select(m, a.y, b.y), vf_select(m, a.z, b.z)};
 }
 
+/* acc + an area light's term (src/simd/area_impl.h, included after this file) */
+static SC_INLINE v3 area_term(int tier, sc_lobe lobe, const shade_vecs *c, sc_light_kind kind,
+                              const sc_light_uniforms *lt, v3 n, v3 v, vf nv,
+                              const float *const *in, size_t i, v3 acc);
+
 /* acc + E cos θ_i ⊙ f(l, v) for one light; lobe is a constant at each call. Unlit lanes drop
  * f: it may be ∞ or NaN there. */
 static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, light_shape shape,
                                const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v, vf nv,
                                const float *const *in, size_t i, v3 acc)
 {
+    if (shape.kind >= SC_LIGHT_SPHERE)
+        return area_term(tier, lobe, c, shape.kind, lt, n, v, nv, in, i, acc);
     int nt = tier == FAST8 ? FAST12 : tier;
     vf falloff, zero = vf_set1(0.0f);
     v3 l = light_dir(tier, nt, shape, lt, lv, n, in, i, &falloff);

@@ -11,6 +11,8 @@
 #include "shadecalc/batch.h"
 #include "shadecalc/shade.h"
 
+enum { SC_LTC_ROW = 6, SC_LTC_ROWS = 32 }; /* fields per row, rows: light/ltc.h's table */
+
 /* An attenuation or spot function: six constants, named by the setup of each kind. */
 typedef struct {
     float k[6];
@@ -49,6 +51,25 @@ void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u);
  * BRDF kernel's model functions (every other model, form and anisotropic roughness). */
 typedef enum { SC_LOBE_NONE, SC_LOBE_BLINN, SC_LOBE_GGX, SC_LOBE_MODEL } sc_lobe;
 
+/* An area light by its approximation (docs/formulas.md §5.3): sphere and tube by the
+ * representative point, disk and rect by LTC (method=point is a point light; reference is
+ * refused). Rect and disk are both a convex polygon of vertices centre + c_k e1 + s_k e2
+ * (sc_area_ring_*: a rect's 4 corners, the disk's 64-gon of equal area). */
+typedef struct {
+    float centre[3]; /* sphere, disk, rect: the centre; tube: the midpoint of p0–p1 */
+    float radius;
+    float p0[3], axis[3]; /* tube: p0 and p1 − p0 */
+    float line;           /* tube: its cylinder's 2Rℓ, ℓ = |p1 − p0| */
+    float half_along;     /* the half-width along the emitter, R (a tube: R + ℓ/2), for α' */
+    float e1[3], e2[3];   /* rect: edge1, edge2; disk: its polygon's radius times two axes */
+    float normal[3];      /* disk, rect: the emitting side (rect: edge1 × edge2) */
+    int two_sided;
+} sc_area_uniforms;
+
+/* c_k and s_k of the polygon of sc_area_uniforms: rect (4 corners) and disk (64-gon). */
+extern const float sc_area_ring_rect[2][4];
+extern const float sc_area_ring_disk[2][64];
+
 typedef struct {
     sc_light_kind kind;
     sc_atten_kind atten; /* point, spot */
@@ -57,6 +78,7 @@ typedef struct {
     float pos[3];   /* point, spot */
     float color[3]; /* E_L or I_L */
     sc_func_uniforms atten_u, spot_u;
+    sc_area_uniforms area; /* sphere, tube, disk, rect (color: L_e) */
 } sc_light_uniforms;
 
 /* The shading kernel's straight-line variants: 1..SC_SHADE_FIXED_MAX lights, all directional
@@ -80,6 +102,11 @@ typedef struct {
     float lobe_cutoff;                      /* 2^(−100/m): powers below it flush to 0 */
     sc_brdf_uniforms brdf;                  /* SC_LOBE_MODEL */
     int variant;                            /* the kernel's variant for the scene's lights */
+    /* LTC (disk and rect lights): c_spec ⊙ F0 and c_spec ⊙ (1 − F0) (0 for lambert), and the
+     * table of light/ltc.h interpolated at the scene's α once: per cos θ_v row, M⁻¹'s m00,
+     * m02, m11, m20, A and B */
+    float ltc_sa[3], ltc_sb[3];
+    float ltc_rows[SC_LTC_ROWS][SC_LTC_ROW];
 } sc_shade_uniforms;
 
 /* The uniforms of scene: 0, or -1 with why naming the model, light or form the kernels do not

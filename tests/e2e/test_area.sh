@@ -79,3 +79,31 @@ verdict "area-distance header" test "$(head -n 1 "$e2e_tmp/ad.csv")" = \
 verdict "point error falls with the distance" awk -F, 'NR == 2 { a = $3 } NR == 3 { b = $3 } END { exit !(b < a / 4) }' "$e2e_tmp/ad.csv"
 verdict "area-distance svg" python3 -c 'import sys, xml.etree.ElementTree as ET; ET.parse(sys.argv[1])' "$e2e_tmp/ad.svg"
 expect "preset area-roughness" 0 '~alpha,sphere_representative' '' -- sweep --preset area-roughness --var alpha=0.2,0.5
+
+# The batch kernels' plans take area lights by their approximations (not method=reference):
+# sweep --tier rows against the double approximation (-p double), within the area rows' bounds
+# (absolute: 2^-15 x L_e (c_diff + c_spec) = 1.2e-4 here, for L_e 2 and c_diff + c_spec 2)
+rows_close() { # WANT GOT TOL: every number within TOL (absolute)
+    printf '%s\n' "$1" >"$e2e_tmp/want.csv"
+    printf '%s\n' "$2" >"$e2e_tmp/got.csv"
+    [ -s "$e2e_tmp/got.csv" ] && paste -d, "$e2e_tmp/want.csv" "$e2e_tmp/got.csv" | awk -F, -v tol="$3" '
+        { n = NF / 2; for (i = 1; i <= n; i++) { d = $i - $(i + n); if (d < 0) d = -d
+          if (d > tol || $(i + n) == "") bad = 1 } }
+        END { exit bad }'
+}
+area_rows() { # LIGHT [OPTIONS]
+    l=$1; shift
+    "$SHADECALC" sweep --var theta_o=0:80:9 --light "$l" --brdf 'cook-torrance D=ggx G=smith-correlated F=schlick alpha=0.3' "$@" | tail -n +2
+}
+for light in 'sphere center=0,1,3 radius=0.5 L=2 method=representative-point' \
+    'tube p0=-1,0,3 p1=1,1,3 radius=0.2 L=2 method=representative-point' \
+    'disk center=0,0,3 normal=0,0,-1 radius=1 L=2 method=ltc' \
+    'rect center=0.5,0,2 edge1=0,1,0 edge2=1,0,0 L=2 method=ltc' \
+    'rect center=0.5,0,2 edge1=0,1,0 edge2=1,0,0 L=2 method=point'; do
+    want=$(area_rows "$light" -p double)
+    verdict "sweep --tier accurate: ${light%% *} ${light##* }" rows_close "$want" "$(area_rows "$light" --tier accurate)" 1.2e-4
+    verdict "sweep --tier bits12: ${light%% *} ${light##* }" rows_close "$want" "$(area_rows "$light" --tier bits12)" 2e-3
+done
+expect "sweep --tier: method=reference" 2 '' '~light 1: sphere method=reference is not covered by the batch kernels (shade and check evaluate it' -- sweep --var theta_o=0:80:9 --light 'sphere center=0,1,3 radius=0.5' --tier accurate
+expect "render --tier: ltc" 0 '' '' -- render --light 'rect center=0,0,4 edge1=2,0,0 edge2=0,2,0 two-sided=1 L=3 method=ltc' --brdf cook-torrance --size 16x16 --tier accurate -o "$e2e_tmp/ltc.exr"
+expect "render --tier: reference refused" 2 '' '~method=reference is not covered by the batch kernels' -- render --light 'sphere center=3,3,3 radius=1' --size 16x16 --tier bits12 -o "$e2e_tmp/ref.exr"

@@ -5,3 +5,4 @@
 #include "simd/trig_impl.h"
 #include "simd/light_impl.h"
 #include "simd/scene_impl.h"
+#include "simd/area_impl.h"
