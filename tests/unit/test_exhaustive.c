@@ -234,6 +234,33 @@ static void hard_cases_round_correctly(void **state)
     check_hard_case("acosh", 0x6eb1a8ec, 0x1p-47);
 }
 
+/* The pairs of pow that make exhaustive found rounded the wrong way in 10^9 biased pairs (its
+ * table of hard cases), against MPFR; the core stays within its stated bound. */
+static void check_hard_pair(uint32_t xbits, uint32_t ybits)
+{
+    const exh_subject *s = highp("pow");
+    float x, y;
+    double exact;
+    memcpy(&x, &xbits, sizeof x);
+    memcpy(&y, &ybits, sizeof y);
+    float want = exh_mpfr_round32(s, x, y, &exact);
+    assert_true(s->f2(x, y) == want);
+    double approx = s->approx2(x, y);
+    assert_true(fabs(approx - exact) <= s->bound(x, y, approx));
+}
+
+static void pow_hard_pairs_round_correctly(void **state)
+{
+    (void)state;
+    static const uint32_t pairs[][2] = {
+        {0x1a0a1b50, 0x3fd4b2b2}, {0x3f7ffffd, 0x43008060}, {0x3f800002, 0x4d89596d},
+        {0x3f800029, 0xcb662369}, {0x3f80098c, 0x48664977}, {0xbea63a2a, 0xc21c0000},
+        {0xbfeb0088, 0x42dc0000}, {0xc531235c, 0xc0e00000},
+    };
+    for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
+        check_hard_pair(pairs[i][0], pairs[i][1]);
+}
+
 /* The sin and acos u1 batch kernels of every instruction set round their cores' hard cases as
  * MPFR does, in every lane: each input sits at each position of a run of 67 ordinary inputs. */
 static void check_batch_hard_cases(const exh_subject *s, const sc_k_hard_case *table, int n)
@@ -314,6 +341,7 @@ int main(void)
         cmocka_unit_test(mediump_and_lowp_round_highp_once_more),
         cmocka_unit_test(a_mediump_not_from_highp_is_caught),
         cmocka_unit_test(pow_rounds_exact_midpoints),
+        cmocka_unit_test(pow_hard_pairs_round_correctly),
         cmocka_unit_test(hard_cases_round_correctly),
         cmocka_unit_test(batch_kernels_round_the_hard_cases),
         cmocka_unit_test(hyperbolic_extremes_round_correctly),
