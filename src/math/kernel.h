@@ -70,6 +70,25 @@ static inline double sc_k_lookup_hard(const sc_k_hard_case *table, int n, float 
     return r;
 }
 
+/* The hard cases of a function of two arguments (pow, atan2): the pair's bits in argument order
+ * and the value as in sc_k_hard_case. sc_k_lookup_hard_pair gives (a, b)'s value, or r. */
+typedef struct {
+    uint32_t a, b;
+    double value;
+} sc_k_hard_pair;
+
+static inline double sc_k_lookup_hard_pair(const sc_k_hard_pair *table, int n, float a, float b,
+                                           double r)
+{
+    uint32_t abits, bbits;
+    memcpy(&abits, &a, sizeof abits);
+    memcpy(&bbits, &b, sizeof bbits);
+    for (int i = 0; i < n; i++)
+        if (table[i].a == abits && table[i].b == bbits)
+            return table[i].value;
+    return r;
+}
+
 /* The hard cases of sin and acos that lie inside the range where their u1 batch kernels run the
  * cores' algorithms in double lanes; src/simd/trig_impl.h sends exactly these inputs to sc_sinf
  * and sc_acosf. (cos's hard cases lie beyond the Cody–Waite range, which goes to sc_cosf.) */

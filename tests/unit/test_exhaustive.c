@@ -234,11 +234,11 @@ static void hard_cases_round_correctly(void **state)
     check_hard_case("acosh", 0x6eb1a8ec, 0x1p-47);
 }
 
-/* The pairs of pow that make exhaustive found rounded the wrong way in 10^9 biased pairs (its
+/* The pairs of pow and atan2 that make exhaustive found rounded the wrong way in 10^9 biased pairs (its
  * table of hard cases), against MPFR; the core stays within its stated bound. */
-static void check_hard_pair(uint32_t xbits, uint32_t ybits)
+static void check_hard_pair(const char *name, uint32_t xbits, uint32_t ybits)
 {
-    const exh_subject *s = highp("pow");
+    const exh_subject *s = highp(name);
     float x, y;
     double exact;
     memcpy(&x, &xbits, sizeof x);
@@ -249,7 +249,7 @@ static void check_hard_pair(uint32_t xbits, uint32_t ybits)
     assert_true(fabs(approx - exact) <= s->bound(x, y, approx));
 }
 
-static void pow_hard_pairs_round_correctly(void **state)
+static void hard_pairs_round_correctly(void **state)
 {
     (void)state;
     static const uint32_t pairs[][2] = {
@@ -258,7 +258,8 @@ static void pow_hard_pairs_round_correctly(void **state)
         {0xbfeb0088, 0x42dc0000}, {0xc531235c, 0xc0e00000},
     };
     for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
-        check_hard_pair(pairs[i][0], pairs[i][1]);
+        check_hard_pair("pow", pairs[i][0], pairs[i][1]);
+    check_hard_pair("atan2", 0xa6f82f9c, 0xaf24ffc0); /* atan2(-1.72213614e-15, -1.50065738e-10) */
 }
 
 /* The sin and acos u1 batch kernels of every instruction set round their cores' hard cases as
@@ -341,7 +342,7 @@ int main(void)
         cmocka_unit_test(mediump_and_lowp_round_highp_once_more),
         cmocka_unit_test(a_mediump_not_from_highp_is_caught),
         cmocka_unit_test(pow_rounds_exact_midpoints),
-        cmocka_unit_test(pow_hard_pairs_round_correctly),
+        cmocka_unit_test(hard_pairs_round_correctly),
         cmocka_unit_test(hard_cases_round_correctly),
         cmocka_unit_test(batch_kernels_round_the_hard_cases),
         cmocka_unit_test(hyperbolic_extremes_round_correctly),
