@@ -281,7 +281,7 @@ bench-brdf: all
 	$(BUILD)/bench/brdf_disney bench/programs/disney.glsl $(BENCH_BRDF_ARGS)
 
 # ---- correct rounding over every binary32 input (tests/exhaustive/, MPFR) ------------------
-# Not part of check: about 1.5 hours of CPU (EXHAUSTIVE_ARGS="--stride 257" for a sample).
+# Not part of check: hours of CPU (about 8 h wall on 2 shared cores) (EXHAUSTIVE_ARGS="--stride 257" for a sample).
 # check runs the same checker on a sample (tests/unit/test_exhaustive.c).
 EXH_OBJS := $(call obj,$(filter-out tests/exhaustive/main.c,$(wildcard tests/exhaustive/*.c)))
 EXH_LIBS := -lmpfr -lgmp
