@@ -1,5 +1,6 @@
 /* The checker of the shortest decimals (shortest_check.h). */
 #include "shortest_check.h"
+#include "shortest_exact.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -166,6 +167,26 @@ typedef struct {
     char why[256];
 } binary32_share;
 
+/* 0 if sc_format_shortest passes for f: by the exact checker, and by the one above too on
+ * every bit pattern divisible by CROSS_CHECK; else -1 with the reason. */
+enum { CROSS_CHECK = 4099 };
+static int check_binary32(float f, uint32_t bits, char *why, size_t why_size)
+{
+    char s[TEXT];
+    sc_format_shortest(s, sizeof s, f, SC_HIGHP);
+    int exact = shortest_exact_check(f, s, why, why_size);
+    if (bits % CROSS_CHECK != 0)
+        return exact;
+    char libc_why[256], exact_why[256];
+    int libc = shortest_check_text(f, SC_HIGHP, s, libc_why, sizeof libc_why);
+    if (libc == exact)
+        return exact;
+    snprintf(exact_why, sizeof exact_why, "%s", exact ? why : "passed");
+    snprintf(why, why_size, "the checkers disagree: exact %.100s; libc %.100s", exact_why,
+             libc ? libc_why : "passed");
+    return -1;
+}
+
 static void *check_share(void *arg)
 {
     binary32_share *w = arg;
@@ -174,7 +195,7 @@ static void *check_share(void *arg)
         float f;
         memcpy(&f, &bits, sizeof f);
         char why[256];
-        if (f != 0.0f && isfinite(f) && shortest_check(f, SC_HIGHP, why, sizeof why) != 0 &&
+        if (f != 0.0f && isfinite(f) && check_binary32(f, bits, why, sizeof why) != 0 &&
             w->failures++ == 0)
             memcpy(w->why, why, sizeof why);
     }
