@@ -298,9 +298,12 @@ $(BUILD)/tests/test_exhaustive: SUP_OBJS += $(EXH_OBJS)
 $(BUILD)/tests/test_exhaustive: LDLIBS := $(EXH_LIBS) $(LDLIBS)
 
 # test_shortest runs the checker of `--groups print` (no MPFR) on binary16 and on samples.
-SHORTEST_CHECK := $(call obj,tests/exhaustive/shortest_check.c)
+SHORTEST_CHECK := $(call obj,tests/exhaustive/shortest_check.c tests/exhaustive/shortest_exact.c)
 $(BUILD)/tests/test_shortest: $(SHORTEST_CHECK)
 $(BUILD)/tests/test_shortest: SUP_OBJS += $(SHORTEST_CHECK)
+# test_shortest_check: the exact checker of `--groups print` against the libc one.
+$(BUILD)/tests/test_shortest_check: $(SHORTEST_CHECK)
+$(BUILD)/tests/test_shortest_check: SUP_OBJS += $(SHORTEST_CHECK)
 
 # ---- install -----------------------------------------------------------------
 LIBDIR := $(DESTDIR)$(PREFIX)/lib

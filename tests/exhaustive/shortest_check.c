@@ -1,5 +1,6 @@
 /* The checker of the shortest decimals (shortest_check.h). */
 #include "shortest_check.h"
+#include "shortest_exact.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -18,7 +19,7 @@ typedef struct {
 static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* Whether the text s reads back to x in p (lowp: without relying on its saturation). */
-static int reads_back(const char *s, double x, sc_prec p)
+int shortest_reads_back(const char *s, double x, sc_prec p)
 {
     double back = strtod(s, NULL);
     if (!same_bits(sc_round(p, back), x))
@@ -32,7 +33,7 @@ static int decimal_reads_back(decimal d, double x, sc_prec p)
 {
     char s[TEXT];
     snprintf(s, sizeof s, "%s%llue%d", signbit(x) ? "-" : "", (unsigned long long)d.m, d.scale);
-    return reads_back(s, x, p);
+    return shortest_reads_back(s, x, p);
 }
 
 static decimal normalized(decimal d)
@@ -109,27 +110,35 @@ static int fail(char *why, size_t size, double x, const char *s, const char *wha
     return -1;
 }
 
-/* Whether s is laid out as %g lays out its value with its digit count n, except that an
- * integer below 10^6 is written out (%.0f) where %g would switch to an exponent. The value is
- * read as a long double, whose 64 bits hold any decimal of at most 17 digits closely enough
+/* Whether s is laid out as shortest_g_text lays out its value with its digit count n. The value
+ * is read as a long double, whose 64 bits hold any decimal of at most 17 digits closely enough
  * that %.{n}Lg gives back its digits. */
 static int laid_out_as_g(const char *s, int n)
 {
     char g[TEXT];
-    long double v = strtold(s, NULL);
-    snprintf(g, sizeof g, "%.*Lg", n, v);
-    const char *e = strchr(g, 'e');
-    if (e && atoi(e + 1) >= 0 && atoi(e + 1) < 6)
-        snprintf(g, sizeof g, "%.0Lf", v);
+    shortest_g_text(g, sizeof g, strtold(s, NULL), n);
     return strcmp(s, g) == 0;
+}
+
+void shortest_g_text(char *out, size_t size, long double v, int n)
+{
+    snprintf(out, size, "%.*Lg", n, v);
+    const char *e = strchr(out, 'e');
+    if (e && atoi(e + 1) >= 0 && atoi(e + 1) < 6)
+        snprintf(out, size, "%.0Lf", v);
 }
 
 int shortest_check(double x, sc_prec p, char *why, size_t why_size)
 {
     char s[TEXT];
     sc_format_shortest(s, sizeof s, x, p);
+    return shortest_check_text(x, p, s, why, why_size);
+}
+
+int shortest_check_text(double x, sc_prec p, const char *s, char *why, size_t why_size)
+{
     decimal got = normalized(value_of(s));
-    if (!reads_back(s, x, p) || (s[0] == '-') != (signbit(x) != 0))
+    if (!shortest_reads_back(s, x, p) || (s[0] == '-') != (signbit(x) != 0))
         return fail(why, why_size, x, s, "does not read back as", got);
     int n = digit_count(got.m);
     if (!laid_out_as_g(s, n))
@@ -158,6 +167,26 @@ typedef struct {
     char why[256];
 } binary32_share;
 
+/* 0 if sc_format_shortest passes for f: by the exact checker, and by the one above too on
+ * every bit pattern divisible by CROSS_CHECK; else -1 with the reason. */
+enum { CROSS_CHECK = 4099 };
+static int check_binary32(float f, uint32_t bits, char *why, size_t why_size)
+{
+    char s[TEXT];
+    sc_format_shortest(s, sizeof s, f, SC_HIGHP);
+    int exact = shortest_exact_check(f, s, why, why_size);
+    if (bits % CROSS_CHECK != 0)
+        return exact;
+    char libc_why[256], exact_why[256];
+    int libc = shortest_check_text(f, SC_HIGHP, s, libc_why, sizeof libc_why);
+    if (libc == exact)
+        return exact;
+    snprintf(exact_why, sizeof exact_why, "%s", exact ? why : "passed");
+    snprintf(why, why_size, "the checkers disagree: exact %.100s; libc %.100s", exact_why,
+             libc ? libc_why : "passed");
+    return -1;
+}
+
 static void *check_share(void *arg)
 {
     binary32_share *w = arg;
@@ -166,7 +195,7 @@ static void *check_share(void *arg)
         float f;
         memcpy(&f, &bits, sizeof f);
         char why[256];
-        if (f != 0.0f && isfinite(f) && shortest_check(f, SC_HIGHP, why, sizeof why) != 0 &&
+        if (f != 0.0f && isfinite(f) && check_binary32(f, bits, why, sizeof why) != 0 &&
             w->failures++ == 0)
             memcpy(w->why, why, sizeof why);
     }
