@@ -174,7 +174,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
     vf w = vf_select(lit, vf_mul(nl, falloff), zero); /* cos θ_i · falloff */
     if (lobe == SC_LOBE_MODEL) {
         const sc_brdf_uniforms *bu = &c->s->brdf;
-        brdf_geometry g = brdf_geometry_make(nt, bu, n, l, v);
+        brdf_geometry g = brdf_geometry_make(nt, bu, v3_load(in, 0, i), n, l, v);
         v3 f = v3_select(lit, brdf_colour(bu, any_model(tier, bu, &g)), (v3){zero, zero, zero});
         v3 e = v3_scale(lv->color, w);
         return (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
