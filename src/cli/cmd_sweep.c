@@ -474,9 +474,9 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
     if (status == SC_SWEEP_WRITE_ERROR && saved != EPIPE)
         sc_error("%s: %s", strcmp(table_path, "-") ? table_path : "standard output",
                  strerror(saved));
-    else if (status == SC_SWEEP_FAILED || status == SC_SWEEP_NO_MEMORY)
+    else if (status != SC_SWEEP_WRITE_ERROR)
         sc_error("sweep: %s", err);
-    return status == SC_SWEEP_FAILED ? SC_EXIT_USAGE : SC_EXIT_RUNTIME;
+    return status == SC_SWEEP_INVALID ? SC_EXIT_USAGE : SC_EXIT_RUNTIME;
 }
 
 /* "shadecalc sweep ARGS", each argument with a space or quote in single quotes. */
