@@ -23,6 +23,7 @@
 
 #include "batch/reference.h"
 #include "batch/reference_light.h"
+#include "tests/support/batch_buffers.h"
 
 enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too */
 
@@ -30,36 +31,9 @@ static const double pi = 3.14159265358979323846;
 
 static uint64_t rng = 0x2545F4914F6CDD1DULL;
 
-typedef struct {
-    float *in[9], *out[3];
-    double *ref; /* 4 per element */
-    sc_batch_args args;
-} run_buffers;
-
-static void buffers_alloc(run_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
-{
-    memset(b, 0, sizeof *b);
-    for (int j = 0; j < e->n_in; j++)
-        assert_non_null(b->args.in[j] = b->in[j] = malloc(n * sizeof(float)));
-    for (int j = 0; j < e->n_out; j++)
-        assert_non_null(b->args.out[j] = b->out[j] = malloc(n * sizeof(float)));
-    assert_non_null(b->ref = malloc(n * 4 * sizeof(double)));
-    b->args.n = n;
-    b->args.params = params;
-}
-
-static void buffers_release(run_buffers *b)
-{
-    for (int j = 0; j < 9; j++)
-        free(b->in[j]);
-    for (int j = 0; j < 3; j++)
-        free(b->out[j]);
-    free(b->ref);
-}
-
 /* Runs every tier and instruction set of `kernel` on the inputs in b (references already in
  * b->ref) and fails on an error beyond a row's bound or a NaN. */
-static void check_all_rows(const char *kernel, run_buffers *b, const char *what)
+static void check_all_rows(const char *kernel, batch_buffers *b, const char *what)
 {
     int rows = 0;
     for (int r = 0; r < sc_batch_count; r++) {
@@ -96,7 +70,7 @@ static const sc_batch_entry *scalar_row(const char *kernel)
     return NULL;
 }
 
-static void fill_references(const sc_batch_entry *e, run_buffers *b)
+static void fill_references(const sc_batch_entry *e, batch_buffers *b)
 {
     for (size_t i = 0; i < b->args.n; i++)
         e->ref(&b->args, i, b->ref + 4 * i);
@@ -114,9 +88,9 @@ static sc_brdf brdf_params(sc_brdf_kind model, int form)
 }
 
 /* n random inputs of e's domain in b */
-static void sampled_buffers(run_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
+static void sampled_buffers(batch_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
 {
-    buffers_alloc(b, e, n, params);
+    batch_buffers_alloc(b, n, params);
     for (size_t i = 0; i < n; i++) {
         float v[9];
         sc_batch_sample(e, &rng, v);
@@ -129,11 +103,11 @@ static void sampled_buffers(run_buffers *b, const sc_batch_entry *e, size_t n, c
 static void check_rows_on(const char *kernel, const void *params, size_t n, const char *what)
 {
     const sc_batch_entry *e = scalar_row(kernel);
-    run_buffers b;
+    batch_buffers b;
     sampled_buffers(&b, e, n, params);
     fill_references(e, &b);
     check_all_rows(kernel, &b, what);
-    buffers_release(&b);
+    batch_buffers_release(&b);
 }
 
 static void check_brdf_on(const sc_brdf *p, size_t n, const char *what)
@@ -227,8 +201,8 @@ static void check_function(const char *kernel, const void *params, double hi, co
                            int n_points, const char *what)
 {
     const sc_batch_entry *e = scalar_row(kernel);
-    run_buffers b;
-    buffers_alloc(&b, e, N_FUNC, params);
+    batch_buffers b;
+    batch_buffers_alloc(&b, N_FUNC, params);
     for (size_t i = 0; i < N_FUNC; i++)
         b.in[0][i] = (size_t)n_points > i ? points[i]
                                           : (float)(hi *
@@ -237,7 +211,7 @@ static void check_function(const char *kernel, const void *params, double hi, co
                                                     0x1p64);
     fill_references(e, &b);
     check_all_rows(kernel, &b, what);
-    buffers_release(&b);
+    batch_buffers_release(&b);
 }
 
 /* Parameters at the edges of every attenuation function: a pure quadratic clq, a window with
@@ -480,7 +454,7 @@ static void seam_normal(float y, float z, float sign, size_t i, float n[3])
 }
 
 /* in[first..first+2] at i: unit n plus offset d (|d| < 1, so above the horizon) */
-static void store_above(run_buffers *b, int first, size_t i, const float n[3], const double d[3])
+static void store_above(batch_buffers *b, int first, size_t i, const float n[3], const double d[3])
 {
     double len = sqrt((double)n[0] * n[0] + (double)n[1] * n[1] + (double)n[2] * n[2]);
     for (int c = 0; c < 3; c++)
@@ -489,7 +463,7 @@ static void store_above(run_buffers *b, int first, size_t i, const float n[3], c
 
 /* Seam inputs of `kernel` (brdf: l, v, n; shade: n, v, p) on two paths, n_y or n_z the larger,
  * and n_x of either sign, each n with SEAM_DIRS pairs of l and v. */
-static void seam_buffers(run_buffers *b, const sc_batch_entry *e, const void *params)
+static void seam_buffers(batch_buffers *b, const sc_batch_entry *e, const void *params)
 {
     static const float paths[2][3] = {{0.3f, 0.2f, 1.0f}, {-0.1f, 0.35f, -1.0f}};
     static const double offsets[SEAM_DIRS][3] = {{0.5, 0.3, -0.2}, {-0.4, 0.2, 0.5},
@@ -497,7 +471,7 @@ static void seam_buffers(run_buffers *b, const sc_batch_entry *e, const void *pa
                                                  {0.0, 0.7, 0.1},  {0.3, 0.0, -0.5}};
     size_t per_path = (2 * SEAM_ULPS + 1) * SEAM_DIRS;
     int shade = strcmp(e->kernel, "shade") == 0;
-    buffers_alloc(b, e, 2 * per_path, params);
+    batch_buffers_alloc(b, 2 * per_path, params);
     for (size_t i = 0; i < 2 * per_path; i++) {
         const float *path = paths[i / per_path];
         float n[3];
@@ -517,11 +491,11 @@ static void seam_buffers(run_buffers *b, const sc_batch_entry *e, const void *pa
 static void check_seam(const char *kernel, const void *params, const char *what)
 {
     const sc_batch_entry *e = scalar_row(kernel);
-    run_buffers b;
+    batch_buffers b;
     seam_buffers(&b, e, params);
     fill_references(e, &b);
     check_all_rows(kernel, &b, what);
-    buffers_release(&b);
+    batch_buffers_release(&b);
 }
 
 /* Anisotropic Ward by the BRDF kernel and by the shading kernel (one directional light near
