@@ -362,7 +362,7 @@ static SC_INLINE void area_kernel(const sc_batch_args *a, sc_light_kind kind,
         return;
     }
     shade_vecs c;
-    shade_vecs_make(&u, 1, &c);
+    shade_vecs_make(&u, &c);
     run_uniforms(a, 9, 3, lanes[u.lobe], &c);
 }
 
