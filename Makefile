@@ -11,7 +11,7 @@
 #   src/cli/*.c        the shadecalc binary; src/cli/cmd_NAME.c is subcommand NAME
 #   tests/unit/test_*.c   one cmocka binary each, linked with tests/support/*.c
 #   tests/e2e/test_*.sh   end-to-end tests of the binary
-#   tests/fuzz/fuzz_*.c   libFuzzer harnesses (built with clang)
+#   tests/fuzz/fuzz_*.c   libFuzzer harnesses (built with clang), linked with tests/support/*.c
 #   bench/*.c          the benchmark harness, linked into the shadecalc binary
 #   bench/programs/*.c standalone programs, one main each (accuracy_table)
 
@@ -236,9 +236,9 @@ fuzz: deps
 .PHONY: fuzz-bins
 fuzz-bins: $(FUZZ_BINS)
 
-build-fuzz/fuzz/%: $(BUILD)/obj/tests/fuzz/%.o $(STATIC)
+build-fuzz/fuzz/%: $(BUILD)/obj/tests/fuzz/%.o $(SUP_OBJS) $(STATIC)
 	@mkdir -p $(dir $@)
-	$(CC) $(LDALL) -fsanitize=fuzzer -o $@ $< $(STATIC) $(LDLIBS)
+	$(CC) $(LDALL) -fsanitize=fuzzer -o $@ $< $(SUP_OBJS) $(STATIC) $(LDLIBS)
 
 # Line and branch coverage of the unit and end-to-end tests (gcovr, a test-only dependency):
 # an -O0 --coverage build in build-cov/, a table per file, and the targets of mk/coverage.py.

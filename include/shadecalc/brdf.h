@@ -103,7 +103,8 @@ typedef struct {
  * cook-torrance walter. */
 void sc_brdf_init(sc_brdf *b, sc_brdf_kind kind);
 
-/* Builds the frame from a normal and a tangent hint (NULL: any tangent); normalizes both.
+/* Builds the frame from a normal and a tangent hint (NULL: e_x, or e_y where |n_x| >=
+ * 2 max(|n_y|, |n_z|), decided on n as given; the batch kernels choose alike); normalizes both.
  * Returns -1 if n is zero or the tangent is parallel to n. */
 int sc_frame_make(const double n[3], const double *tangent, sc_frame *out);
 

@@ -113,11 +113,12 @@ size_t sc_sweep_row_max(const sc_sweep_table *t);
 typedef struct {
     const sc_sweep_grid *grid;
     int n_results;
-    /* results[0..n_results) of one row; 0, or -1 with a message in err */
+    /* results[0..n_results) of one row; 0, or with a message in err -1 (it failed at run
+     * time) or SC_SWEEP_ROW_INVALID (the row's input is invalid: a spec its values make so) */
     int (*eval)(void *user, int worker, const double *vars, double *results, char *err,
                 size_t errsize);
     void *user;
-    /* optional: sees every row; 0, or -1 with err to stop */
+    /* optional: sees every row; 0, or -1 or SC_SWEEP_ROW_INVALID with err to stop (as eval) */
     int (*consume)(void *user, uint64_t row, const double *vars, const double *results, char *err,
                    size_t errsize);
     const sc_sweep_table *table; /* optional: rows written to out as text */
@@ -133,11 +134,15 @@ typedef struct {
                       char *err, size_t errsize);
 } sc_sweep_job;
 
+/* What eval or consume returns for a row whose input is invalid (not a run-time failure). */
+enum { SC_SWEEP_ROW_INVALID = -2 };
+
 typedef enum {
     SC_SWEEP_OK = 0,
-    SC_SWEEP_FAILED = -1,      /* eval or consume: err holds "row N: message" */
+    SC_SWEEP_FAILED = -1,      /* eval or consume failed: err holds "row N: message" */
     SC_SWEEP_WRITE_ERROR = -2, /* writing to out failed: errno is the reason */
-    SC_SWEEP_NO_MEMORY = -3
+    SC_SWEEP_NO_MEMORY = -3,
+    SC_SWEEP_INVALID = -4 /* eval or consume returned SC_SWEEP_ROW_INVALID: err as FAILED */
 } sc_sweep_status;
 
 /* Evaluates every row of the grid; rows before a failing one are still written and consumed.

@@ -88,7 +88,10 @@ static void cross3(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* Gram–Schmidt: t' = t − (t·n)n, normalized. Without a hint, the axis least aligned with n. */
+/* Gram–Schmidt: t' = t − (t·n)n, normalized. Without a hint, e_x, or e_y where n_x is at least
+ * twice each other component in magnitude (|n_x| >= 0.81 |n| there, so either axis keeps
+ * |t'|² >= 0.2): decided on n as given by comparisons alone, which no rounding or scaling
+ * changes, so that the float kernels choose the same axis for the same input (batch.h). */
 int sc_frame_make(const double n[3], const double *tangent, sc_frame *out)
 {
     if (normalize3(n, out->n) < 0)
@@ -97,7 +100,7 @@ int sc_frame_make(const double n[3], const double *tangent, sc_frame *out)
     if (tangent)
         memcpy(hint, tangent, sizeof hint);
     else
-        hint[fabs(out->n[0]) < 0.9 ? 0 : 1] = 1.0;
+        hint[fabs(n[0]) >= 2.0 * fmax(fabs(n[1]), fabs(n[2])) ? 1 : 0] = 1.0;
     double tn = hint[0] * out->n[0] + hint[1] * out->n[1] + hint[2] * out->n[2];
     double t[3];
     for (int c = 0; c < 3; c++)

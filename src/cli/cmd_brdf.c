@@ -1,5 +1,6 @@
 /* shadecalc brdf — a built-in model written as a BRDF Explorer .brdf file (the man page's BRDF
  * FILES), whose GLSL computes the same f. */
+#include <errno.h>
 #include <getopt.h>
 #include <string.h>
 
@@ -55,9 +56,12 @@ static int write_export(const sc_brdf *b, const char *path)
         sc_error("brdf: %s", err);
         return SC_EXIT_RUNTIME;
     }
+    errno = 0;
     if (sc_brdf_export(sc_atomic_stream(f), b) < 0) {
+        int errnum = errno; /* of the failed write */
         sc_atomic_abort(f);
-        sc_error("brdf: %s: write error", path);
+        sc_error("%s: %s", strcmp(path, "-") ? path : "standard output",
+                 errnum ? strerror(errnum) : "write error");
         return SC_EXIT_RUNTIME;
     }
     if (sc_atomic_commit(f, err, sizeof err) < 0) {

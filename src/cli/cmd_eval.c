@@ -10,7 +10,7 @@
 #include "cli/eval_file.h"
 #include "cli/line_reader.h"
 
-enum { MAX_DEFINES = 32, MAX_HITS = 8 };
+enum { MAX_DEFINES = 32 };
 
 typedef struct {
     sc_prec prec;
@@ -28,15 +28,6 @@ typedef struct {
     sc_lvalue values[MAX_DEFINES], references[MAX_DEFINES];
     int n;
 } define_set;
-
-/* The domain errors of one evaluation, each (line, column, rule) once. */
-typedef struct {
-    struct {
-        int line, column;
-        const char *func, *rule;
-    } hit[MAX_HITS];
-    int n;
-} domain_hits;
 
 static void usage(FILE *out)
 {
@@ -75,21 +66,6 @@ static const char *position(char *buf, size_t size, int line, int column)
     else
         snprintf(buf, size, "column %d", column);
     return buf;
-}
-
-static void record_domain(domain_hits *h, int line, int column, const char *func, const char *rule)
-{
-    for (int i = 0; i < h->n; i++)
-        if (h->hit[i].line == line && h->hit[i].column == column &&
-            strcmp(h->hit[i].rule, rule) == 0)
-            return;
-    if (h->n < MAX_HITS) {
-        h->hit[h->n].line = line;
-        h->hit[h->n].column = column;
-        h->hit[h->n].func = func;
-        h->hit[h->n].rule = rule;
-        h->n++;
-    }
 }
 
 /* Prints the domain errors; returns 1 if they are fatal (--strict). */
@@ -150,7 +126,7 @@ static void keep_domain(void *user, int line, int column, const char *func, cons
 {
     const one_run *run = user;
     if (run->hits)
-        record_domain(run->hits, line, column, func, rule);
+        domain_hits_record(run->hits, line, column, func, rule);
 }
 
 /* One run in precision p; prints a runtime error. Status as the command's. */

@@ -244,8 +244,6 @@ static void print_json(const shade_setup *s, const sc_shade_result *r, const sha
 
 /* ---- options ---- */
 
-enum { OPT_N = 256, OPT_V, OPT_P, OPT_EYE, OPT_TANGENT };
-
 typedef struct {
     int opt;
     const char *arg;
@@ -266,26 +264,17 @@ static int parse_format(const char *arg, int *format)
 /* Applies one command-line option to the setup (after any scene file). */
 static int apply(shade_setup *s, const pending *o)
 {
-    static const char *const names[] = {"n", "v", "p", "eye", "tangent"};
     switch (o->opt) {
     case 'l': return setup_add_light(s, o->arg, "");
     case 'b': return setup_set_model(s, o->arg, "");
     case 'a': return setup_set_value(s, "ambient", o->arg, "");
-    default: return setup_set_value(s, names[o->opt - OPT_N], o->arg, "");
+    default: return setup_set_value(s, setup_geometry_name(o->opt), o->arg, "");
     }
 }
 
 static int parse_options(int argc, char **argv, shade_setup *s, shade_options *o)
 {
-    static const struct option longs[] = {{"light", required_argument, NULL, 'l'},
-                                          {"brdf", required_argument, NULL, 'b'},
-                                          {"ambient", required_argument, NULL, 'a'},
-                                          {"scene", required_argument, NULL, 's'},
-                                          {"n", required_argument, NULL, OPT_N},
-                                          {"v", required_argument, NULL, OPT_V},
-                                          {"p", required_argument, NULL, OPT_P},
-                                          {"eye", required_argument, NULL, OPT_EYE},
-                                          {"tangent", required_argument, NULL, OPT_TANGENT},
+    static const struct option longs[] = {SETUP_LONG_OPTIONS,
                                           {"precision", required_argument, NULL, 'p'},
                                           {"format", required_argument, NULL, 'f'},
                                           {"explain", no_argument, NULL, 'e'},

@@ -10,6 +10,7 @@
 
 #include "cli/cli.h"
 #include "cli/progress.h"
+#include "cli/setup.h"
 #include "cli/sweep_cli.h"
 #include "shadecalc/file.h"
 
@@ -82,12 +83,7 @@ static void usage(FILE *out)
 /* ---- options ---- */
 
 enum {
-    OPT_N = 256,
-    OPT_V,
-    OPT_P,
-    OPT_EYE,
-    OPT_TANGENT,
-    OPT_VAR,
+    OPT_VAR = SETUP_OPT_END,
     OPT_LOG,
     OPT_PRESET,
     OPT_TIER,
@@ -140,18 +136,17 @@ static int add_item(sweep_options *o, int opt, const char *name, const char *arg
 
 static int option_value(sweep_options *o, int c, const char *arg)
 {
-    static const char *const geometry[] = {"n", "v", "p", "eye", "tangent"};
     switch (c) {
     case 'l': return add_item(o, 'l', "light", arg);
     case 'b': return add_item(o, 'b', "brdf", arg);
     case 'a': return add_item(o, 'a', "ambient", arg);
     case 's': o->setup.scene = arg; return SC_EXIT_OK;
     case OPT_TIER: o->setup.tier = arg; return SC_EXIT_OK;
-    case OPT_N:
-    case OPT_V:
-    case OPT_P:
-    case OPT_EYE:
-    case OPT_TANGENT: return add_item(o, c, geometry[c - OPT_N], arg);
+    case SETUP_OPT_N:
+    case SETUP_OPT_V:
+    case SETUP_OPT_P:
+    case SETUP_OPT_EYE:
+    case SETUP_OPT_TANGENT: return add_item(o, c, setup_geometry_name(c), arg);
     case OPT_VAR:
         if (o->n_var_args == SC_SWEEP_MAX_VARS) {
             sc_error("sweep: too many --var (at most %d)", SC_SWEEP_MAX_VARS);
@@ -238,15 +233,7 @@ static int parse_options(int argc, char **argv, sweep_options *o)
 {
     static const struct option longs[] = {{"var", required_argument, NULL, OPT_VAR},
                                           {"log", optional_argument, NULL, OPT_LOG},
-                                          {"light", required_argument, NULL, 'l'},
-                                          {"brdf", required_argument, NULL, 'b'},
-                                          {"ambient", required_argument, NULL, 'a'},
-                                          {"scene", required_argument, NULL, 's'},
-                                          {"n", required_argument, NULL, OPT_N},
-                                          {"v", required_argument, NULL, OPT_V},
-                                          {"p", required_argument, NULL, OPT_P},
-                                          {"eye", required_argument, NULL, OPT_EYE},
-                                          {"tangent", required_argument, NULL, OPT_TANGENT},
+                                          SETUP_LONG_OPTIONS,
                                           {"preset", required_argument, NULL, OPT_PRESET},
                                           {"tier", required_argument, NULL, OPT_TIER},
                                           {"precision", required_argument, NULL, 'p'},
@@ -474,9 +461,9 @@ static int execute(const sweep_options *o, const sc_sweep_grid *g, const sweep_p
     if (status == SC_SWEEP_WRITE_ERROR && saved != EPIPE)
         sc_error("%s: %s", strcmp(table_path, "-") ? table_path : "standard output",
                  strerror(saved));
-    else if (status == SC_SWEEP_FAILED || status == SC_SWEEP_NO_MEMORY)
+    else if (status != SC_SWEEP_WRITE_ERROR)
         sc_error("sweep: %s", err);
-    return status == SC_SWEEP_FAILED ? SC_EXIT_USAGE : SC_EXIT_RUNTIME;
+    return status == SC_SWEEP_INVALID ? SC_EXIT_USAGE : SC_EXIT_RUNTIME;
 }
 
 /* "shadecalc sweep ARGS", each argument with a space or quote in single quotes. */

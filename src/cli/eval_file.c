@@ -7,7 +7,7 @@
 #include "cli/cli.h"
 #include "cli/eval_file.h"
 
-enum { MAX_SOURCE = 16 << 20, MAX_HITS = 8 };
+enum { MAX_SOURCE = 16 << 20 };
 
 /* The whole of `in`, NUL-terminated; NULL with a message if unreadable, too long or binary. */
 static char *read_source(FILE *in, const char *name)
@@ -47,30 +47,31 @@ static char *read_source(FILE *in, const char *name)
 typedef struct {
     const eval_file_options *o;
     const char *name;
-    struct {
-        int line, column;
-        const char *func, *rule;
-    } hit[MAX_HITS];
-    int n_hits;
+    domain_hits hits;
     int header_printed;
     sc_ltype header_type;
     int status;
 } file_run;
 
+void domain_hits_record(domain_hits *h, int line, int column, const char *func, const char *rule)
+{
+    for (int i = 0; i < h->n; i++)
+        if (h->hit[i].line == line && h->hit[i].column == column &&
+            strcmp(h->hit[i].rule, rule) == 0)
+            return;
+    if (h->n < DOMAIN_MAX_HITS) {
+        h->hit[h->n].line = line;
+        h->hit[h->n].column = column;
+        h->hit[h->n].func = func;
+        h->hit[h->n].rule = rule;
+        h->n++;
+    }
+}
+
 static void record_domain(void *user, int line, int column, const char *func, const char *rule)
 {
     file_run *run = user;
-    for (int i = 0; i < run->n_hits; i++)
-        if (run->hit[i].line == line && run->hit[i].column == column &&
-            strcmp(run->hit[i].rule, rule) == 0)
-            return;
-    if (run->n_hits < MAX_HITS) {
-        run->hit[run->n_hits].line = line;
-        run->hit[run->n_hits].column = column;
-        run->hit[run->n_hits].func = func;
-        run->hit[run->n_hits].rule = rule;
-        run->n_hits++;
-    }
+    domain_hits_record(&run->hits, line, column, func, rule);
 }
 
 void sc_report_domain_hit(const char *at, const char *func, const char *rule, int strict)
@@ -90,13 +91,14 @@ void sc_report_domain_hit(const char *at, const char *func, const char *rule, in
 /* Reports the domain errors since the last value; 1 if they are fatal (--strict). */
 static int report_domain(file_run *run)
 {
-    for (int i = 0; i < run->n_hits; i++) {
+    const domain_hits *h = &run->hits;
+    for (int i = 0; i < h->n; i++) {
         char at[1100];
-        snprintf(at, sizeof at, "%.1024s:%d:%d", run->name, run->hit[i].line, run->hit[i].column);
-        sc_report_domain_hit(at, run->hit[i].func, run->hit[i].rule, run->o->strict);
+        snprintf(at, sizeof at, "%.1024s:%d:%d", run->name, h->hit[i].line, h->hit[i].column);
+        sc_report_domain_hit(at, h->hit[i].func, h->hit[i].rule, run->o->strict);
     }
-    int fatal = run->o->strict && run->n_hits > 0;
-    run->n_hits = 0;
+    int fatal = run->o->strict && h->n > 0;
+    run->hits.n = 0;
     return fatal;
 }
 

@@ -36,4 +36,18 @@ void sc_print_csv_field(FILE *out, const char *s);
  * --strict, else a warning. */
 void sc_report_domain_hit(const char *at, const char *func, const char *rule, int strict);
 
+enum { DOMAIN_MAX_HITS = 8 };
+
+/* The domain errors of a run, each (line, column, rule) once, the first DOMAIN_MAX_HITS. */
+typedef struct {
+    struct {
+        int line, column;
+        const char *func, *rule;
+    } hit[DOMAIN_MAX_HITS];
+    int n;
+} domain_hits;
+
+/* Adds a domain error to h unless it holds it already (or is full). */
+void domain_hits_record(domain_hits *h, int line, int column, const char *func, const char *rule);
+
 #endif

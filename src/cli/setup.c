@@ -53,6 +53,12 @@ int setup_set_model(shade_setup *s, const char *spec, const char *where)
     return SC_EXIT_OK;
 }
 
+const char *setup_geometry_name(int c)
+{
+    static const char *const names[] = {"n", "v", "p", "eye", "tangent"};
+    return names[c - SETUP_OPT_N];
+}
+
 int setup_set_value(shade_setup *s, const char *name, const char *value, const char *where)
 {
     static const char *const names[] = {"ambient", "n", "v", "p", "eye", "tangent"};

@@ -7,6 +7,31 @@
 
 enum { SETUP_MAX_LIGHTS = 64 };
 
+/* The command-line options of a setup, shared by shade and sweep (struct option entries):
+ * -l --light, -b --brdf, -a --ambient, -s --scene, and the geometry --n --v --p --eye
+ * --tangent as SETUP_OPT_N.. in that order (setup_geometry_name), followed by the command's
+ * own options from SETUP_OPT_END. */
+enum {
+    SETUP_OPT_N = 256,
+    SETUP_OPT_V,
+    SETUP_OPT_P,
+    SETUP_OPT_EYE,
+    SETUP_OPT_TANGENT,
+    SETUP_OPT_END
+};
+#define SETUP_LONG_OPTIONS                                                                         \
+    {"light", required_argument, NULL, 'l'}, {"brdf", required_argument, NULL, 'b'},               \
+        {"ambient", required_argument, NULL, 'a'}, {"scene", required_argument, NULL, 's'},        \
+        {"n", required_argument, NULL, SETUP_OPT_N}, {"v", required_argument, NULL, SETUP_OPT_V},  \
+        {"p", required_argument, NULL, SETUP_OPT_P},                                               \
+        {"eye", required_argument, NULL, SETUP_OPT_EYE},                                           \
+    {                                                                                              \
+        "tangent", required_argument, NULL, SETUP_OPT_TANGENT                                      \
+    }
+
+/* The setup_set_value name of geometry option c (SETUP_OPT_N..SETUP_OPT_TANGENT) */
+const char *setup_geometry_name(int c);
+
 typedef struct {
     sc_light lights[SETUP_MAX_LIGHTS];
     int n_lights;

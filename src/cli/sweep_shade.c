@@ -112,7 +112,8 @@ static int moves_l(const shade_plan *s)
     return s->halfway || s->angle[THETA_I] >= 0 || s->angle[PHI_I] >= 0;
 }
 
-/* Re-parses the templates whose text changed at this row. */
+/* Re-parses the templates whose text changed at this row: 0, or SC_SWEEP_ROW_INVALID with the
+ * error (the row's values make a spec invalid: a usage error, as when it is given so). */
 static int update_specs(const shade_plan *s, worker_state *w, const double *vars, char *err,
                         size_t errsize)
 {
@@ -121,7 +122,7 @@ static int update_specs(const shade_plan *s, worker_state *w, const double *vars
         char text[SPEC_MAX], why[256];
         if (sc_sweep_substitute(t->text, s->grid, vars, text, sizeof text, why, sizeof why) < 0) {
             snprintf(err, errsize, "%s", why);
-            return -1;
+            return SC_SWEEP_ROW_INVALID;
         }
         if (strcmp(text, w->last[i]) == 0)
             continue;
@@ -134,7 +135,7 @@ static int update_specs(const shade_plan *s, worker_state *w, const double *vars
         if (bad < 0) { /* an ignored key (bad = 1) was reported when the setup was built */
             w->last[i][0] = '\0';
             snprintf(err, errsize, "'%s': %s", text, why);
-            return -1;
+            return SC_SWEEP_ROW_INVALID;
         }
         memcpy(w->last[i], text, sizeof text);
     }
@@ -176,8 +177,9 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
 {
     const shade_plan *s = user;
     worker_state *w = &s->workers[worker];
-    if (update_specs(s, w, vars, err, errsize) < 0)
-        return -1;
+    int invalid = update_specs(s, w, vars, err, errsize);
+    if (invalid < 0)
+        return invalid;
     sc_shade_point at = s->at;
     double l[3];
     place(s, vars, &at, l);

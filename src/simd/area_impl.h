@@ -235,12 +235,14 @@ static SC_INLINE vf ltc_mass(const vf m[SC_LTC_ROW])
 }
 
 /* The view frame (ltc.c's view_frame): z = n, x = v's direction in the tangent plane (the
- * frame's tangent where v is along n), y = z × x. */
+ * frame's tangent where v is along n: its axis chosen on the unit n, which may differ from
+ * brdf.c's at the seam; no matter, as with v along n the lobes are symmetric about n),
+ * y = z × x. */
 static SC_INLINE void view_frame(int nt, v3 n, v3 v, vf nv, v3 axes[3])
 {
     v3 x = v3_sub(v, v3_scale(n, nv));
     vf xx = v3_dot(x, x);
-    axes[0] = v3_select(vf_lt(xx, vf_set1(0x1p-40f)), tangent_of(nt, n),
+    axes[0] = v3_select(vf_lt(xx, vf_set1(0x1p-40f)), tangent_of(nt, n, tangent_axis_x(n)),
                         v3_normalize_dd(nt, x, xx));
     axes[1] = v3_cross(n, axes[0]);
     axes[2] = n;
@@ -360,7 +362,7 @@ static SC_INLINE void area_kernel(const sc_batch_args *a, sc_light_kind kind,
         return;
     }
     shade_vecs c;
-    shade_vecs_make(&u, 1, &c);
+    shade_vecs_make(&u, &c);
     run_uniforms(a, 9, 3, lanes[u.lobe], &c);
 }
 

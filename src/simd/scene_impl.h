@@ -34,17 +34,18 @@ static SC_INLINE light_vecs light_vecs_of(const sc_shade_uniforms *s, const sc_l
 
 /* A plan's uniforms as vectors, broadcast once per call into the kernel's own frame, where the
  * output stores cannot alias them: the loop keeps them in registers (or reads them from the
- * stack as operands) instead of broadcasting each one for every vector. `lights`: the lights of
- * a straight-line variant. */
+ * stack as operands) instead of broadcasting each one for every vector. `lights`: every light's
+ * (n_lights of them), for the straight-line variants and the generic loop alike; only the
+ * vector from a point or spot light to the shading point is per element. */
 typedef struct {
     const sc_shade_uniforms *s;
     v3 amb;
     vf m, cutoff;                    /* blinn-phong */
     vf a2, a2m1, one_a2, f0, one_f0; /* ggx: α², α² − 1, 1 − α², F0, 1 − F0 */
-    light_vecs lights[SC_SHADE_FIXED_MAX];
+    light_vecs lights[SC_BATCH_MAX_LIGHTS];
 } shade_vecs;
 
-static SC_INLINE void shade_vecs_make(const sc_shade_uniforms *s, int count, shade_vecs *c)
+static SC_INLINE void shade_vecs_make(const sc_shade_uniforms *s, shade_vecs *c)
 {
     float a2 = s->alpha * s->alpha;
     c->s = s;
@@ -52,7 +53,7 @@ static SC_INLINE void shade_vecs_make(const sc_shade_uniforms *s, int count, sha
     c->m = vf_set1(s->m), c->cutoff = vf_set1(s->lobe_cutoff);
     c->a2 = vf_set1(a2), c->a2m1 = vf_set1(a2 - 1.0f), c->one_a2 = vf_set1(1.0f - a2);
     c->f0 = vf_set1(s->f0), c->one_f0 = vf_set1(1.0f - s->f0);
-    for (int k = 0; k < count; k++)
+    for (int k = 0; k < s->n_lights; k++)
         c->lights[k] = light_vecs_of(s, &s->lights[k]);
 }
 
@@ -174,7 +175,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
     vf w = vf_select(lit, vf_mul(nl, falloff), zero); /* cos θ_i · falloff */
     if (lobe == SC_LOBE_MODEL) {
         const sc_brdf_uniforms *bu = &c->s->brdf;
-        brdf_geometry g = brdf_geometry_make(nt, bu, n, l, v);
+        brdf_geometry g = brdf_geometry_make(nt, bu, v3_load(in, 0, i), n, l, v);
         v3 f = v3_select(lit, brdf_colour(bu, any_model(tier, bu, &g)), (v3){zero, zero, zero});
         v3 e = v3_scale(lv->color, w);
         return (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
@@ -206,21 +207,20 @@ static SC_INLINE void shade_tier(int tier, sc_lobe lobe, light_shape shape, int 
     if (count < 0)
         for (int k = 0; k < s->n_lights; k++) {
             const sc_light_uniforms *lt = &s->lights[k];
-            light_vecs lv = light_vecs_of(s, lt);
-            acc = light_term(tier, lobe, c, (light_shape){lt->kind, lt->atten}, lt, &lv, n, v, nv,
-                             in, i, acc);
+            acc = light_term(tier, lobe, c, (light_shape){lt->kind, lt->atten}, lt, &c->lights[k],
+                             n, v, nv, in, i, acc);
         }
     for (int k = 0; k < count; k++) /* a constant count: unrolled */
         acc = light_term(tier, lobe, c, shape, &s->lights[k], &c->lights[k], n, v, nv, in, i, acc);
     v3_store(acc, out, i);
 }
 
-/* The loop of one lane, the lane inlined into it: count lights in the plan's vectors. */
-static SC_INLINE void shade_run(const sc_batch_args *a, int count, lane_n_fn lane)
+/* The loop of one lane, the lane inlined into it. */
+static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane)
 {
     const sc_shade_uniforms *s = sc_batch_plan_uniforms(a->params);
     shade_vecs c;
-    shade_vecs_make(s, count, &c);
+    shade_vecs_make(s, &c);
     run_uniforms(a, 9, 3, lane, &c);
 }
 
@@ -233,7 +233,7 @@ static SC_INLINE void shade_run(const sc_batch_args *a, int count, lane_n_fn lan
         shade_tier(tier, lobe, (light_shape){SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE}, -1, in, out, i, \
                    c);                                                                             \
     }                                                                                              \
-    static void name(const sc_batch_args *a) { shade_run(a, 0, name##_lane); }
+    static void name(const sc_batch_args *a) { shade_run(a, name##_lane); }
 #define SHADE_FIXED_LANE(name, tier, lobe, si, count)                                              \
     static SC_INLINE void name##_##si##_##count##_lane(const float *const *in, float *const *out,  \
                                                        size_t i, const void *c)                    \
@@ -244,7 +244,7 @@ static SC_INLINE void shade_run(const sc_batch_args *a, int count, lane_n_fn lan
     }                                                                                              \
     static void name##_##si##_##count(const sc_batch_args *a)                                      \
     {                                                                                              \
-        shade_run(a, count, name##_##si##_##count##_lane);                                         \
+        shade_run(a, name##_##si##_##count##_lane);                                                \
     }
 #define SHADE_FIXED_LANES(name, tier, lobe)                                                        \
     SHADE_LANE(name, tier, lobe)                                                                   \

@@ -21,7 +21,7 @@ typedef struct {
     slot_state state;
     uint64_t block; /* FREE: the block it may take next; else the block it holds */
     int rows;       /* rows evaluated; fewer than the block's when eval failed */
-    int failed;
+    int failed;     /* 0, or the status of the failed row (SC_SWEEP_FAILED, SC_SWEEP_INVALID) */
     char err[ERR_MAX];
     double *vars, *results;
     char *text;
@@ -53,7 +53,14 @@ static int block_row_count(const runner *r, uint64_t block)
     return left < (uint64_t)r->block_rows ? (int)left : r->block_rows;
 }
 
-/* Evaluates rows first.. of the block one at a time: the number evaluated before one failed. */
+/* The status of a row for which eval or consume returned `code` < 0. */
+static sc_sweep_status row_failure(int code)
+{
+    return code == SC_SWEEP_ROW_INVALID ? SC_SWEEP_INVALID : SC_SWEEP_FAILED;
+}
+
+/* Evaluates rows first.. of the block one at a time: the number evaluated before one failed
+ * (its status in s->failed). */
 static int eval_rows(const runner *r, int worker, uint64_t first, int count, slot *s, char *msg,
                      size_t size)
 {
@@ -61,9 +68,12 @@ static int eval_rows(const runner *r, int worker, uint64_t first, int count, slo
     for (int i = 0; i < count; i++) {
         double *vars = s->vars + (size_t)i * (size_t)r->n_vars;
         sc_sweep_grid_point(job->grid, first + (uint64_t)i, vars);
-        if (job->eval(job->user, worker, vars, s->results + (size_t)i * (size_t)job->n_results, msg,
-                      size) < 0)
+        int code = job->eval(job->user, worker, vars,
+                             s->results + (size_t)i * (size_t)job->n_results, msg, size);
+        if (code < 0) {
+            s->failed = row_failure(code);
             return i;
+        }
     }
     return count;
 }
@@ -86,6 +96,7 @@ static void fill_block(const runner *r, int worker, uint64_t block, slot *s)
     int count = block_row_count(r, block);
     uint64_t first = block * (uint64_t)r->block_rows;
     char msg[ERR_MAX - 32] = "";
+    s->failed = SC_SWEEP_FAILED; /* eval_block's failures are run-time ones */
     s->rows = job->eval_block ? eval_rows_at_once(r, worker, first, count, s, msg, sizeof msg)
                               : eval_rows(r, worker, first, count, s, msg, sizeof msg);
     s->text_len = 0;
@@ -95,8 +106,9 @@ static void fill_block(const runner *r, int worker, uint64_t block, slot *s)
                                       s->results + (size_t)i * (size_t)job->n_results);
         s->text_len += len > 0 ? (size_t)len : 0;
     }
-    s->failed = s->rows < count;
-    if (s->failed)
+    if (s->rows == count)
+        s->failed = 0;
+    else
         snprintf(s->err, sizeof s->err, "row %llu: %s",
                  (unsigned long long)(first + (uint64_t)s->rows + 1), msg);
 }
@@ -135,16 +147,18 @@ static sc_sweep_status drain_block(runner *r, uint64_t block, slot *s, char *err
     uint64_t first = block * (uint64_t)r->block_rows;
     for (int i = 0; job->consume && i < s->rows; i++) {
         char msg[ERR_MAX - 32];
-        if (job->consume(job->user, first + (uint64_t)i, s->vars + (size_t)i * (size_t)r->n_vars,
-                         s->results + (size_t)i * (size_t)job->n_results, msg, sizeof msg) < 0) {
+        int code = job->consume(job->user, first + (uint64_t)i,
+                                s->vars + (size_t)i * (size_t)r->n_vars,
+                                s->results + (size_t)i * (size_t)job->n_results, msg, sizeof msg);
+        if (code < 0) {
             snprintf(err, errsize, "row %llu: %s", (unsigned long long)(first + (uint64_t)i + 1),
                      msg);
-            return SC_SWEEP_FAILED;
+            return row_failure(code);
         }
     }
     if (s->failed) {
         snprintf(err, errsize, "%s", s->err);
-        return SC_SWEEP_FAILED;
+        return (sc_sweep_status)s->failed;
     }
     if (job->progress)
         job->progress(job->user, first + (uint64_t)s->rows, r->rows);

@@ -54,7 +54,7 @@ while IFS=, read -r x value; do
     [ "$("$SHADECALC" eval -D "x=float($x)" "$loop")" = "$value" ] || same=0
 done <"$e2e_tmp/rows.csv"
 verdict "divergent rows equal eval" test $same = 1
-expect "runtime error names the row" 2 'x,value
+expect "runtime error names the row" 1 'x,value
 0,0
 0.25,0.25
 0.5,0.5' "error: sweep: row 4: column 20: index 3 is out of range 0..2" -- sweep --var x=0:1:5 'vec3 v = vec3(x); v[int(x * 4.0)]'

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "shadecalc/brdf_file.h"
+#include "tests/support/fuzz_text.h"
 
 static void evaluate(const sc_brdf_file *f)
 {
@@ -30,11 +31,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *text = malloc(size + 1), err[512];
+    char *text = fuzz_text(data, size), err[512];
     if (!text)
         return 0;
-    memcpy(text, data, size);
-    text[size] = '\0';
     sc_brdf_file *f = sc_brdf_file_parse(text, "fuzz.brdf", err, sizeof err);
     if (f) {
         evaluate(f);

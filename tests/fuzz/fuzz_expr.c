@@ -3,9 +3,9 @@
  * dual numbers. */
 #include <stdint.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "shadecalc/expr.h"
+#include "tests/support/fuzz_text.h"
 
 static void ignore_domain(void *user, int column, const char *func, const char *rule)
 {
@@ -19,11 +19,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *src = malloc(size + 1);
+    char *src = fuzz_text(data, size);
     if (!src)
         return 0;
-    memcpy(src, data, size);
-    src[size] = '\0';
     sc_expr_input inputs[2] = {{"x", SC_FLOAT}, {"v", SC_VEC3}};
     sc_value values[2] = {{SC_FLOAT, {0.5}}, {SC_VEC3, {1, -2, 3}}};
     sc_expr_error err;

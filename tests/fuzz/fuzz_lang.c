@@ -3,12 +3,12 @@
  * precision (loops are bounded by a small iteration limit); and block execution
  * (sc_program_run_block) must give every value of every element as runs of one element give
  * it, bit for bit (NaN for NaN), and stop at the same element: a difference aborts. */
-#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "shadecalc/lang.h"
+#include "tests/support/lang_value.h"
+#include "tests/support/fuzz_text.h"
 
 static int check_value(void *user, const char *text, int len, int line, const sc_lvalue *v)
 {
@@ -31,22 +31,6 @@ enum { ELEMENTS = 3 };
 static const double xs[ELEMENTS] = {0.5, -1.25, 3.0};
 static const double vs[3][ELEMENTS] = {{1, 0, 2}, {-2, 0.5, 2}, {3, -4, 2}}; /* v's columns */
 
-typedef struct {
-    int value, seen;
-    double out[16];
-} one_value;
-
-static int keep(void *user, const char *text, int len, int line, const sc_lvalue *v)
-{
-    one_value *o = user;
-    (void)text, (void)len, (void)line;
-    if (o->seen++ == o->value)
-        memcpy(o->out, v->v, (size_t)sc_ltype_size(v->type) * sizeof(double));
-    return 0;
-}
-
-static int same(double a, double b) { return (isnan(a) && isnan(b)) || memcmp(&a, &b, 8) == 0; }
-
 static void compare_value(const sc_program *prog, sc_prec p, int value)
 {
     double cols[16][ELEMENTS];
@@ -60,13 +44,14 @@ static void compare_value(const sc_program *prog, sc_prec p, int value)
     for (int e = 0; e < ELEMENTS; e++) {
         sc_lvalue values[2] = {{{SC_KIND_FLOAT, 1, 1}, {xs[e]}},
                                {{SC_KIND_FLOAT, 1, 3}, {vs[0][e], vs[1][e], vs[2][e]}}};
-        one_value o = {value, 0, {0}};
-        if (sc_program_run(prog, p, values, keep, ignore_domain, &o, &err) < 0) {
+        double one[16] = {0};
+        lang_value_pick pick = {value, 0, one};
+        if (sc_program_run(prog, p, values, lang_value_keep, ignore_domain, &pick, &err) < 0) {
             first_failed = first_failed < e ? first_failed : e;
             continue;
         }
         for (int k = 0; k < sc_ltype_size(sc_program_value_type(prog, value)); k++)
-            if (!same(o.out[k], cols[k][e]))
+            if (!lang_same_bits(one[k], cols[k][e]))
                 abort();
     }
     if (ran != first_failed)
@@ -77,11 +62,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *src = malloc(size + 1);
+    char *src = fuzz_text(data, size);
     if (!src)
         return 0;
-    memcpy(src, data, size);
-    src[size] = '\0';
     sc_lang_input inputs[2] = {{"x", {SC_KIND_FLOAT, 1, 1}}, {"v", {SC_KIND_FLOAT, 1, 3}}};
     sc_lvalue values[2] = {{{SC_KIND_FLOAT, 1, 1}, {0.5}}, {{SC_KIND_FLOAT, 1, 3}, {1, -2, 3}}};
     sc_lang_options options = {10000, (int)(size & 1), (int)(size >> 1 & 1)};

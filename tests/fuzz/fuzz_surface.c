@@ -12,6 +12,7 @@
 
 #include "shadecalc/mesh.h"
 #include "shadecalc/transform.h"
+#include "tests/support/fuzz_text.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -86,11 +87,9 @@ static void fuzz_obj(const uint8_t *data, size_t size)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *text = malloc(size + 1);
+    char *text = fuzz_text(data, size);
     if (text == NULL)
         return 0;
-    memcpy(text, data, size);
-    text[size] = '\0';
     fuzz_surface(text);
     fuzz_matrix(text);
     fuzz_obj(data, size);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "shadecalc/sweep.h"
+#include "tests/support/fuzz_text.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -27,11 +28,9 @@ static void check_values(const sc_sweep_var *v)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *input = malloc(size + 1);
+    char *input = fuzz_text(data, size);
     if (!input)
         return 0;
-    memcpy(input, data, size);
-    input[size] = '\0';
     char *text = strchr(input, '\n');
     if (text)
         *text++ = '\0';

@@ -21,6 +21,7 @@
 
 #include "batch/reference.h"
 #include "batch/reference_light.h"
+#include "tests/support/batch_buffers.h"
 
 enum { N_RANDOM = 100003, N_EDGE = 4099 }; /* not multiples of 8: the tails run too */
 
@@ -43,34 +44,7 @@ static void scene_of(one_light *s, const char *light, const char *brdf)
     s->scene.n_lights = 1;
 }
 
-typedef struct {
-    float *in[9], *out[3];
-    double *ref;
-    sc_batch_args args;
-} buffers;
-
-static void buffers_alloc(buffers *b, size_t n, const void *params)
-{
-    memset(b, 0, sizeof *b);
-    for (int j = 0; j < 9; j++)
-        assert_non_null(b->args.in[j] = b->in[j] = malloc(n * sizeof(float)));
-    for (int j = 0; j < 3; j++)
-        assert_non_null(b->args.out[j] = b->out[j] = malloc(n * sizeof(float)));
-    assert_non_null(b->ref = malloc(n * 4 * sizeof(double)));
-    b->args.n = n;
-    b->args.params = params;
-}
-
-static void buffers_release(buffers *b)
-{
-    for (int j = 0; j < 9; j++)
-        free(b->in[j]);
-    for (int j = 0; j < 3; j++)
-        free(b->out[j]);
-    free(b->ref);
-}
-
-static void set3(buffers *b, int first, size_t i, const float v[3])
+static void set3(batch_buffers *b, int first, size_t i, const float v[3])
 {
     for (int c = 0; c < 3; c++)
         b->in[first + c][i] = v[c];
@@ -78,7 +52,7 @@ static void set3(buffers *b, int first, size_t i, const float v[3])
 
 /* The kernel of the light's kind on every instruction set against the double approximation
  * (the row's reference on b's inputs) within the row's bound, never NaN. */
-static void check_kernel(const char *kernel, buffers *b, const char *what)
+static void check_kernel(const char *kernel, batch_buffers *b, const char *what)
 {
     const sc_batch_entry *first = sc_batch_find(kernel, "accurate", SC_ISA_SCALAR);
     assert_non_null(first);
@@ -110,8 +84,8 @@ static void check_kernel(const char *kernel, buffers *b, const char *what)
 /* n random n, v, p (the rows' generator) with the scene */
 static void check_random(const char *kernel, const one_light *s, const char *what)
 {
-    buffers b;
-    buffers_alloc(&b, N_RANDOM, &s->scene);
+    batch_buffers b;
+    batch_buffers_alloc(&b, N_RANDOM, &s->scene);
     for (size_t i = 0; i < N_RANDOM; i++) {
         float v[9];
         sc_batch_gen_shade(&rng, v);
@@ -119,7 +93,7 @@ static void check_random(const char *kernel, const one_light *s, const char *wha
             b.in[j][i] = v[j];
     }
     check_kernel(kernel, &b, what);
-    buffers_release(&b);
+    batch_buffers_release(&b);
 }
 
 /* The representative point with lambert and both forms of blinn-phong; LTC with lambert and
@@ -174,8 +148,8 @@ typedef void (*place_fn)(size_t i, float p[3], float n[3]);
 
 static void check_places(const char *kernel, const one_light *s, place_fn place, const char *what)
 {
-    buffers b;
-    buffers_alloc(&b, N_EDGE, &s->scene);
+    batch_buffers b;
+    batch_buffers_alloc(&b, N_EDGE, &s->scene);
     for (size_t i = 0; i < N_EDGE; i++) {
         float n[3], v[3], p[3];
         random_unit(n);
@@ -188,7 +162,7 @@ static void check_places(const char *kernel, const one_light *s, place_fn place,
         set3(&b, 6, i, p);
     }
     check_kernel(kernel, &b, what);
-    buffers_release(&b);
+    batch_buffers_release(&b);
 }
 
 /* A point at distance r from (0, 2, 0) in a random direction. */
@@ -289,8 +263,8 @@ static void zero_size_gives_zero(void **state)
     for (int l = 0; l < 2; l++) {
         one_light s;
         scene_of(&s, lights[l][1], "cook-torrance D=ggx G=smith-correlated alpha=0.3");
-        buffers b;
-        buffers_alloc(&b, 9, &s.scene);
+        batch_buffers b;
+        batch_buffers_alloc(&b, 9, &s.scene);
         for (size_t i = 0; i < 9; i++) {
             float n[3] = {0, 1, 0}, v[3] = {0.6f, 0.8f, 0}, p[3] = {(float)i - 4.0f, 0, 0.5f};
             set3(&b, 0, i, n);
@@ -306,7 +280,7 @@ static void zero_size_gives_zero(void **state)
                 for (int c = 0; c < 3; c++)
                     assert_true(b.out[c][i] == 0.0f);
         }
-        buffers_release(&b);
+        batch_buffers_release(&b);
     }
 }
 
@@ -360,7 +334,7 @@ static void plans_accept_and_refuse(void **state)
 }
 
 /* n random inputs of the rows' domain into b */
-static void random_inputs(buffers *b)
+static void random_inputs(batch_buffers *b)
 {
     for (size_t i = 0; i < b->args.n; i++) {
         float v[9];
@@ -380,7 +354,7 @@ static void plans_shade_as_the_kernels(void **state)
     const sc_scene *scenes[] = {&sc_batch_test_area_sphere, &sc_batch_test_area_tube,
                                 &sc_batch_test_area_disk, &sc_batch_test_area_rect};
     enum { N = 1003 };
-    buffers b, p;
+    batch_buffers b, p;
     char why[256];
     for (int k = 0; k < 4; k++)
         for (int isa = 0; isa < SC_ISA_COUNT; isa++) {
@@ -391,8 +365,8 @@ static void plans_shade_as_the_kernels(void **state)
                                                         sizeof why);
             if (!plan)
                 fail_msg("%s: %s", kernels[k], why);
-            buffers_alloc(&b, N, scenes[k]);
-            buffers_alloc(&p, N, plan);
+            batch_buffers_alloc(&b, N, scenes[k]);
+            batch_buffers_alloc(&p, N, plan);
             random_inputs(&b);
             for (int j = 0; j < 9; j++)
                 memcpy(p.in[j], b.in[j], N * sizeof(float));
@@ -400,8 +374,8 @@ static void plans_shade_as_the_kernels(void **state)
             sc_batch_plan_shade(plan, (const float *const *)p.in, p.out, N);
             for (int j = 0; j < 3; j++)
                 assert_memory_equal(b.out[j], p.out[j], N * sizeof(float));
-            buffers_release(&b);
-            buffers_release(&p);
+            batch_buffers_release(&b);
+            batch_buffers_release(&p);
             sc_batch_plan_free(plan);
         }
     /* method=point: the plan of the stand-in */
@@ -413,15 +387,15 @@ static void plans_shade_as_the_kernels(void **state)
                   *pp = plan_of(&point, "accurate", why, sizeof why);
     assert_non_null(pa);
     assert_non_null(pp);
-    buffers_alloc(&b, N, NULL);
-    buffers_alloc(&p, N, NULL);
+    batch_buffers_alloc(&b, N, NULL);
+    batch_buffers_alloc(&p, N, NULL);
     random_inputs(&b);
     sc_batch_plan_shade(pa, (const float *const *)b.in, b.out, N);
     sc_batch_plan_shade(pp, (const float *const *)b.in, p.out, N);
     for (int j = 0; j < 3; j++)
         assert_memory_equal(b.out[j], p.out[j], N * sizeof(float));
-    buffers_release(&b);
-    buffers_release(&p);
+    batch_buffers_release(&b);
+    batch_buffers_release(&p);
     sc_batch_plan_free(pa);
     sc_batch_plan_free(pp);
 }

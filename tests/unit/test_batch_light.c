@@ -23,6 +23,7 @@
 
 #include "batch/reference.h"
 #include "batch/reference_light.h"
+#include "tests/support/batch_buffers.h"
 
 enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too */
 
@@ -30,36 +31,9 @@ static const double pi = 3.14159265358979323846;
 
 static uint64_t rng = 0x2545F4914F6CDD1DULL;
 
-typedef struct {
-    float *in[9], *out[3];
-    double *ref; /* 4 per element */
-    sc_batch_args args;
-} run_buffers;
-
-static void buffers_alloc(run_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
-{
-    memset(b, 0, sizeof *b);
-    for (int j = 0; j < e->n_in; j++)
-        assert_non_null(b->args.in[j] = b->in[j] = malloc(n * sizeof(float)));
-    for (int j = 0; j < e->n_out; j++)
-        assert_non_null(b->args.out[j] = b->out[j] = malloc(n * sizeof(float)));
-    assert_non_null(b->ref = malloc(n * 4 * sizeof(double)));
-    b->args.n = n;
-    b->args.params = params;
-}
-
-static void buffers_release(run_buffers *b)
-{
-    for (int j = 0; j < 9; j++)
-        free(b->in[j]);
-    for (int j = 0; j < 3; j++)
-        free(b->out[j]);
-    free(b->ref);
-}
-
 /* Runs every tier and instruction set of `kernel` on the inputs in b (references already in
  * b->ref) and fails on an error beyond a row's bound or a NaN. */
-static void check_all_rows(const char *kernel, run_buffers *b, const char *what)
+static void check_all_rows(const char *kernel, batch_buffers *b, const char *what)
 {
     int rows = 0;
     for (int r = 0; r < sc_batch_count; r++) {
@@ -96,7 +70,7 @@ static const sc_batch_entry *scalar_row(const char *kernel)
     return NULL;
 }
 
-static void fill_references(const sc_batch_entry *e, run_buffers *b)
+static void fill_references(const sc_batch_entry *e, batch_buffers *b)
 {
     for (size_t i = 0; i < b->args.n; i++)
         e->ref(&b->args, i, b->ref + 4 * i);
@@ -114,9 +88,9 @@ static sc_brdf brdf_params(sc_brdf_kind model, int form)
 }
 
 /* n random inputs of e's domain in b */
-static void sampled_buffers(run_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
+static void sampled_buffers(batch_buffers *b, const sc_batch_entry *e, size_t n, const void *params)
 {
-    buffers_alloc(b, e, n, params);
+    batch_buffers_alloc(b, n, params);
     for (size_t i = 0; i < n; i++) {
         float v[9];
         sc_batch_sample(e, &rng, v);
@@ -129,11 +103,11 @@ static void sampled_buffers(run_buffers *b, const sc_batch_entry *e, size_t n, c
 static void check_rows_on(const char *kernel, const void *params, size_t n, const char *what)
 {
     const sc_batch_entry *e = scalar_row(kernel);
-    run_buffers b;
+    batch_buffers b;
     sampled_buffers(&b, e, n, params);
     fill_references(e, &b);
     check_all_rows(kernel, &b, what);
-    buffers_release(&b);
+    batch_buffers_release(&b);
 }
 
 static void check_brdf_on(const sc_brdf *p, size_t n, const char *what)
@@ -227,8 +201,8 @@ static void check_function(const char *kernel, const void *params, double hi, co
                            int n_points, const char *what)
 {
     const sc_batch_entry *e = scalar_row(kernel);
-    run_buffers b;
-    buffers_alloc(&b, e, N_FUNC, params);
+    batch_buffers b;
+    batch_buffers_alloc(&b, N_FUNC, params);
     for (size_t i = 0; i < N_FUNC; i++)
         b.in[0][i] = (size_t)n_points > i ? points[i]
                                           : (float)(hi *
@@ -237,7 +211,7 @@ static void check_function(const char *kernel, const void *params, double hi, co
                                                     0x1p64);
     fill_references(e, &b);
     check_all_rows(kernel, &b, what);
-    buffers_release(&b);
+    batch_buffers_release(&b);
 }
 
 /* Parameters at the edges of every attenuation function: a pure quadratic clq, a window with
@@ -424,6 +398,126 @@ static void anisotropic_shading_within_bounds(void **state)
     check_shade_scene(SC_BRDF_WARD, make_anisotropic, 0.0, N_ANISO, "anisotropic ward");
     check_shade_scene(SC_BRDF_COOK_TORRANCE, make_anisotropic, 0.0, N_ANISO,
                       "anisotropic cook-torrance");
+}
+
+/* ---- the tangent frame's seam ----
+ *
+ * Without a tangent, sc_frame_make builds t from e_x or from e_y, whichever its rule picks for
+ * n; the kernels must pick the same axis for the same input (batch.h), or an anisotropic lobe
+ * is evaluated in a frame turned by up to 90°. Along n(s) = (s, y, z), s growing, the double
+ * frame switches from e_x to e_y once: the float s of the switch is found by bisection on
+ * sc_frame_make itself (whatever its rule), and the kernels are checked on the SEAM_ULPS
+ * floats either side of it, every tier and instruction set. */
+
+enum { SEAM_ULPS = 48, SEAM_DIRS = 6 };
+
+/* Whether sc_frame_make's tangent for n (as given, in double) comes from e_y: t lies in the
+ * plane of n and its axis, so (t × n)·e_x vanishes for e_x and is n_z/|t| for e_y (n_z != 0). */
+static int frame_from_e_y(const float n[3])
+{
+    double nd[3] = {n[0], n[1], n[2]};
+    sc_frame f;
+    assert_int_equal(sc_frame_make(nd, NULL, &f), 0);
+    return fabs(f.t[1] * f.n[2] - f.t[2] * f.n[1]) > 1e-6;
+}
+
+/* The smallest positive float s with the frame of (s, y, z) from e_y (one switch in (0, 1e4]) */
+static float seam_of(float y, float z)
+{
+    uint32_t lo, hi;
+    float a = 1e-3f, b = 1e4f;
+    assert_false(frame_from_e_y((float[3]){a, y, z}));
+    assert_true(frame_from_e_y((float[3]){b, y, z}));
+    memcpy(&lo, &a, sizeof lo), memcpy(&hi, &b, sizeof hi);
+    while (hi - lo > 1) { /* positive floats are ordered as their bit patterns */
+        uint32_t mid = lo + (hi - lo) / 2;
+        float s;
+        memcpy(&s, &mid, sizeof s);
+        if (frame_from_e_y((float[3]){s, y, z}))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    memcpy(&b, &hi, sizeof b);
+    return b;
+}
+
+/* The normal (±s, y, z) of element i: s the seam's float stepped by k ulps, k in ±SEAM_ULPS */
+static void seam_normal(float y, float z, float sign, size_t i, float n[3])
+{
+    float s = seam_of(y, z);
+    uint32_t bits;
+    memcpy(&bits, &s, sizeof bits);
+    bits += (uint32_t)((int)(i / SEAM_DIRS) - SEAM_ULPS);
+    memcpy(&s, &bits, sizeof s);
+    n[0] = sign * s, n[1] = y, n[2] = z;
+}
+
+/* in[first..first+2] at i: unit n plus offset d (|d| < 1, so above the horizon) */
+static void store_above(batch_buffers *b, int first, size_t i, const float n[3], const double d[3])
+{
+    double len = sqrt((double)n[0] * n[0] + (double)n[1] * n[1] + (double)n[2] * n[2]);
+    for (int c = 0; c < 3; c++)
+        b->in[first + c][i] = (float)(n[c] / len + d[c]);
+}
+
+/* Seam inputs of `kernel` (brdf: l, v, n; shade: n, v, p) on two paths, n_y or n_z the larger,
+ * and n_x of either sign, each n with SEAM_DIRS pairs of l and v. */
+static void seam_buffers(batch_buffers *b, const sc_batch_entry *e, const void *params)
+{
+    static const float paths[2][3] = {{0.3f, 0.2f, 1.0f}, {-0.1f, 0.35f, -1.0f}};
+    static const double offsets[SEAM_DIRS][3] = {{0.5, 0.3, -0.2}, {-0.4, 0.2, 0.5},
+                                                 {0.1, -0.6, 0.3}, {-0.2, -0.3, -0.6},
+                                                 {0.0, 0.7, 0.1},  {0.3, 0.0, -0.5}};
+    size_t per_path = (2 * SEAM_ULPS + 1) * SEAM_DIRS;
+    int shade = strcmp(e->kernel, "shade") == 0;
+    batch_buffers_alloc(b, 2 * per_path, params);
+    for (size_t i = 0; i < 2 * per_path; i++) {
+        const float *path = paths[i / per_path];
+        float n[3];
+        seam_normal(path[0], path[1], path[2], i % per_path, n);
+        const double *dl = offsets[i % SEAM_DIRS], *dv = offsets[(i + 1) % SEAM_DIRS];
+        for (int c = 0; c < 3; c++)
+            b->in[(shade ? 0 : 6) + c][i] = n[c];
+        store_above(b, 3, i, n, dv);
+        if (shade)
+            for (int c = 0; c < 3; c++)
+                b->in[6 + c][i] = 0.0f;
+        else
+            store_above(b, 0, i, n, dl);
+    }
+}
+
+static void check_seam(const char *kernel, const void *params, const char *what)
+{
+    const sc_batch_entry *e = scalar_row(kernel);
+    batch_buffers b;
+    seam_buffers(&b, e, params);
+    fill_references(e, &b);
+    check_all_rows(kernel, &b, what);
+    batch_buffers_release(&b);
+}
+
+/* Anisotropic Ward by the BRDF kernel and by the shading kernel (one directional light near
+ * the normals) at the seam. */
+static void anisotropic_frame_seam(void **state)
+{
+    (void)state;
+    sc_brdf p = brdf_params(SC_BRDF_WARD, SC_WARD_1992);
+    make_anisotropic(&p, 0.0);
+    check_seam("brdf", &p, "anisotropic ward at the frame's seam");
+    sc_light lights[SC_BATCH_MAX_LIGHTS];
+    sc_scene scene;
+    char why[256];
+    sc_batch_example_scene(SC_BRDF_WARD, 1, 0, 0, lights, &scene);
+    make_anisotropic(&scene.model.brdf, 0.0);
+    static const double toward_normals[3] = {0.9, 0.2, 0.1};
+    memcpy(lights[0].dir, toward_normals, sizeof toward_normals);
+    sc_batch_plan *plan = sc_batch_plan_compile(&scene, "accurate", SC_ISA_SCALAR, why, sizeof why);
+    if (!plan)
+        fail_msg("%s", why);
+    check_seam("shade", plan, "anisotropic ward shading at the frame's seam");
+    sc_batch_plan_free(plan);
 }
 
 /* ---- the shading kernel's lobe exponents ---- */
@@ -753,6 +847,7 @@ int main(void)
         cmocka_unit_test(anisotropic_brdfs_within_bounds),
         cmocka_unit_test(anisotropic_forms_within_bounds),
         cmocka_unit_test(anisotropic_shading_within_bounds),
+        cmocka_unit_test(anisotropic_frame_seam),
         cmocka_unit_test(shade_lobe_exponents_within_bounds),
         cmocka_unit_test(plans_match_sc_shade),
         cmocka_unit_test(plans_refuse_with_reasons),

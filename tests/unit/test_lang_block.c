@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "shadecalc/lang.h"
+#include "tests/support/lang_value.h"
 
 enum { MAX_ELEMENTS = 600, MAX_REPORTS = 4096, MAX_INPUT_COLUMNS = 8, MAX_SOURCE = 1 << 20 };
 
@@ -33,21 +34,10 @@ typedef struct {
 } report_log;
 
 typedef struct {
-    const sc_program *prog;
-    int value, seen;
-    double *out; /* the chosen value's components */
+    lang_value_pick pick; /* first: the run's user pointer is also the pick's */
     report_log *log;
     long element;
 } element_run;
-
-static int capture(void *user, const char *text, int len, int line, const sc_lvalue *v)
-{
-    element_run *e = user;
-    (void)text, (void)len, (void)line;
-    if (e->seen++ == e->value)
-        memcpy(e->out, v->v, (size_t)sc_ltype_size(v->type) * sizeof(double));
-    return 0;
-}
 
 static void log_report(report_log *log, long element, int line, int column, const char *func,
                        const char *rule)
@@ -88,11 +78,6 @@ static int same_report(const report *a, const report *b)
 
 /* Equal bits; NaN for NaN whatever their sign and payload, which C leaves open (x + y may
  * return either operand's NaN, and a compiler may swap the operands of + and *). */
-static int same_bits(double a, double b)
-{
-    return (isnan(a) && isnan(b)) || memcmp(&a, &b, sizeof a) == 0;
-}
-
 typedef struct {
     const double *columns[MAX_INPUT_COLUMNS]; /* input components, n values each */
     long n;
@@ -134,15 +119,15 @@ static void compare_value(const char *src, const sc_program *prog, const sc_lang
         double one[16] = {0};
         sc_lvalue values[8];
         element_inputs(prog, decl, n_inputs, in, e, values);
-        element_run run = {prog, value, 0, one, &element_log, e};
+        element_run run = {{value, 0, one}, &element_log, e};
         sc_lang_error err;
-        int rc = sc_program_run(prog, p, values, capture, element_domain, &run, &err);
+        int rc = sc_program_run(prog, p, values, lang_value_keep, element_domain, &run, &err);
         if (rc < 0 && first_failed == in->n) {
             first_failed = e;
             eerr = err;
         }
         for (int k = 0; rc == 0 && k < size; k++) {
-            if (!same_bits(one[k], block_out[k][e]))
+            if (!lang_same_bits(one[k], block_out[k][e]))
                 fail_msg("%s\nprecision %d value %d element %ld component %d: block %a, alone %a",
                          src, (int)p, value, e, k, block_out[k][e], one[k]);
         }

@@ -20,6 +20,7 @@
 
 #include "shadecalc/mat.h"
 #include "shadecalc/pmath.h"
+#include "tests/support/splitmix.h"
 
 #define U_FLOAT 0x1p-24
 #define U_DOUBLE 0x1p-53
@@ -35,18 +36,9 @@ static int laplace_roundings(int n) { return (n - 1) * (n + 2) / 2; }
 
 static uint64_t rng_state = 0x13198a2e03707344u;
 
-static uint64_t next_u64(void)
-{
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
+static uint64_t next_u64(void) { return splitmix_next(&rng_state); }
 
-static double uniform(double lo, double hi)
-{
-    return lo + (hi - lo) * (double)(next_u64() >> 11) * 0x1p-53;
-}
+static double uniform(double lo, double hi) { return splitmix_uniform(&rng_state, lo, hi); }
 
 /* ---- one adapter table per matrix type: everything travels as double arrays -------------- */
 

@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "shadecalc/pmath.h"
+#include "tests/support/splitmix.h"
 #include "shadecalc/vec.h"
 
 #define U_FLOAT 0x1p-24
@@ -30,18 +31,9 @@ static double gamma_n(int n, double u) { return n * u / (1.0 - n * u); }
 
 static uint64_t rng_state = 0x243f6a8885a308d3u;
 
-static uint64_t next_u64(void)
-{
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
+static uint64_t next_u64(void) { return splitmix_next(&rng_state); }
 
-static double uniform(double lo, double hi)
-{
-    return lo + (hi - lo) * (double)(next_u64() >> 11) * 0x1p-53;
-}
+static double uniform(double lo, double hi) { return splitmix_uniform(&rng_state, lo, hi); }
 
 /* A float of random sign and significand with its exponent uniform in [-8, 8]. */
 static float random_float(void)
