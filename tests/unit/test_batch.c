@@ -23,28 +23,16 @@
 
 #include "batch/reference.h"
 #include "batch/reference_light.h"
-
-#if defined(__SANITIZE_ADDRESS__)
-#define SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define SANITIZED 1
-#endif
-#endif
-#ifdef SANITIZED
-enum { BOUND_INPUTS = 20000 };
-#else
-enum { BOUND_INPUTS = 1000000 };
-#endif
+#include "tests/unit/scale.h"
 
 /* The inputs per kernel and domain of the bound checks: SHADECALC_BATCH_INPUTS when set (`make
  * coverage` runs 10^4: the same code paths, the special values and random inputs in every
- * domain, in a fraction of the time at -O0), else BOUND_INPUTS. */
+ * domain, in a fraction of the time at -O0), else 10^6 (a sample under the sanitizers). */
 static size_t bound_inputs(void)
 {
     const char *env = getenv("SHADECALC_BATCH_INPUTS");
     long n = env ? atol(env) : 0;
-    return n > 0 ? (size_t)n : BOUND_INPUTS;
+    return n > 0 ? (size_t)n : sc_test_inputs(1000000);
 }
 
 static const float specials[] = {0.0f,     -0.0f,     0x1p-149f, -0x1p-149f, FLT_MIN, -FLT_MIN,

@@ -1,6 +1,7 @@
 /* The attenuation, spot and BRDF batch kernels beyond the parameters of their table rows
  * (tests/unit/test_batch.c checks those on 10^6 inputs): every BRDF model, form, D × G × F
- * combination and roughness, anisotropic ones on 10^6 inputs, and the edge rules of light.h (r = 0 finite,
+ * combination and roughness, anisotropic ones on 10^6 inputs (a sample under the sanitizers:
+ * tests/unit/scale.h), and the edge rules of light.h (r = 0 finite,
  * f_c = f_max flat, r_start = r_end a step, cutoff 180, inner = outer a hard edge, exponent 0),
  * on every tier and instruction set, against the library's double functions (the references of
  * src/batch/reference_light.c) within each row's stated bound. */
@@ -24,6 +25,7 @@
 #include "batch/reference.h"
 #include "batch/reference_light.h"
 #include "tests/support/batch_buffers.h"
+#include "tests/unit/scale.h"
 
 enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too */
 
@@ -333,7 +335,7 @@ static void make_anisotropic(sc_brdf *b, double unused)
 static void anisotropic_brdfs_within_bounds(void **state)
 {
     (void)state;
-    enum { N_ANISO = 1000000 };
+    const size_t N_ANISO = sc_test_inputs(1000000);
     sc_brdf p = brdf_params(SC_BRDF_WARD, SC_WARD_1992);
     make_anisotropic(&p, 0.0);
     check_brdf_on(&p, N_ANISO, "anisotropic ward");
@@ -394,7 +396,7 @@ static void check_shade_scene(sc_brdf_kind kind, void (*change)(sc_brdf *, doubl
 static void anisotropic_shading_within_bounds(void **state)
 {
     (void)state;
-    enum { N_ANISO = 1000000 };
+    const size_t N_ANISO = sc_test_inputs(1000000);
     check_shade_scene(SC_BRDF_WARD, make_anisotropic, 0.0, N_ANISO, "anisotropic ward");
     check_shade_scene(SC_BRDF_COOK_TORRANCE, make_anisotropic, 0.0, N_ANISO,
                       "anisotropic cook-torrance");
@@ -530,7 +532,7 @@ static void anisotropic_frame_seam(void **state)
 static void shade_lobe_exponents_within_bounds(void **state)
 {
     (void)state;
-    enum { N_SHADE = 1000000 };
+    const size_t N_SHADE = sc_test_inputs(1000000);
     static const double exponents[] = {40.5, 128.0, 64.0};
     for (size_t k = 0; k < sizeof exponents / sizeof exponents[0]; k++) {
         char what[32];

@@ -1,0 +1,35 @@
+/* The input counts of the unit tests' large numeric sweeps (10^6 inputs per kernel, tier and
+ * instruction set, and the like).
+ *
+ * The plain build checks every stated bound on the full count. Under AddressSanitizer and
+ * UndefinedBehaviorSanitizer (make SAN=1, the second stage of make check), where each input
+ * costs many times more, the same sweeps run through the same code paths on a deterministic
+ * prefix of the same inputs, 1/SC_SAN_SAMPLE of them: the sanitized run checks memory and
+ * undefined behaviour, the plain run the bounds on every input. */
+#ifndef SC_TEST_SCALE_H
+#define SC_TEST_SCALE_H
+
+#include <stddef.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define SC_TEST_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SC_TEST_SANITIZED 1
+#endif
+#endif
+
+enum { SC_SAN_SAMPLE = 50 };
+
+/* full in the plain build; under the sanitizers full / SC_SAN_SAMPLE, plus 7 so that a count of
+ * whole vectors still runs the tails of the 4-, 8- and 16-lane loops. */
+static inline size_t sc_test_inputs(size_t full)
+{
+#ifdef SC_TEST_SANITIZED
+    return full / SC_SAN_SAMPLE + 7;
+#else
+    return full;
+#endif
+}
+
+#endif
