@@ -1,7 +1,7 @@
 /* Every stated bound of the highp built-ins (shadecalc/accuracy.h) on more than 10^6 inputs per
  * function against the double-precision libm reference, and the special values. Under the
- * sanitizers (SHADECALC_ACCURACY_INPUTS set by the Makefile's SAN build) the count is smaller:
- * the sanitized run checks memory and undefined behaviour, the plain run the bounds. */
+ * sanitizers the count is a sample (tests/unit/scale.h): the sanitized run checks memory and
+ * undefined behaviour, the plain run the bounds; SHADECALC_ACCURACY_INPUTS=N sets it. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -15,12 +15,13 @@
 
 #include "shadecalc/accuracy.h"
 #include "shadecalc/glsl.h"
+#include "tests/unit/scale.h"
 
 static long input_count(void)
 {
     const char *env = getenv("SHADECALC_ACCURACY_INPUTS");
     long n = env ? atol(env) : 0;
-    return n > 0 ? n : 1100000;
+    return n > 0 ? n : (long)sc_test_inputs(1100000);
 }
 
 static void every_stated_bound_holds(void **state)

@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "tests/exhaustive/shortest_check.h"
+#include "tests/unit/scale.h"
 #include "util/shortest.h"
 
 /* ---- a small unsigned big integer: enough for 2^1100 · 10^330 · 2^126 ---- */
@@ -150,13 +151,12 @@ static uint64_t xorshift(uint64_t *s)
     return *s;
 }
 
-enum { SAMPLES = 1000000 };
-
-/* SAMPLES random bit patterns of binary32 (highp) or binary64 (double); zeros, infinities and
- * NaNs skipped. */
+/* 10^6 random bit patterns of binary32 (highp) or binary64 (double), a sample of them under the
+ * sanitizers (tests/unit/scale.h); zeros, infinities and NaNs skipped. */
 static void check_random_values(sc_prec p, uint64_t seed)
 {
-    for (int i = 0; i < SAMPLES; i++) {
+    size_t samples = sc_test_inputs(1000000);
+    for (size_t i = 0; i < samples; i++) {
         uint64_t bits = xorshift(&seed);
         uint32_t high = (uint32_t)(bits >> 32);
         float f;
