@@ -22,6 +22,7 @@
 #include "batch/reference.h"
 #include "batch/reference_light.h"
 #include "tests/support/batch_buffers.h"
+#include "tests/unit/scale.h"
 
 enum { N_RANDOM = 100003, N_EDGE = 4099 }; /* not multiples of 8: the tails run too */
 
@@ -81,12 +82,13 @@ static void check_kernel(const char *kernel, batch_buffers *b, const char *what)
     }
 }
 
-/* n random n, v, p (the rows' generator) with the scene */
+/* N_RANDOM random n, v, p (the rows' generator; a sample under the sanitizers) with the scene */
 static void check_random(const char *kernel, const one_light *s, const char *what)
 {
     batch_buffers b;
-    batch_buffers_alloc(&b, N_RANDOM, &s->scene);
-    for (size_t i = 0; i < N_RANDOM; i++) {
+    size_t n = sc_test_inputs(N_RANDOM);
+    batch_buffers_alloc(&b, n, &s->scene);
+    for (size_t i = 0; i < n; i++) {
         float v[9];
         sc_batch_gen_shade(&rng, v);
         for (int j = 0; j < 9; j++)
