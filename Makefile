@@ -218,22 +218,21 @@ UNIT_RUNS   := $(addprefix unit/,$(UNIT_NAMES))
 E2E_RUNS    := $(addprefix e2e/,$(E2E_NAMES))
 .PHONY: tests $(UNIT_RUNS) $(E2E_RUNS)
 
+# $(call run_pool,KINDS,TARGETS): fresh results for KINDS (unit, e2e), then TARGETS JOBS at a
+# time; $(call summary,KIND,NAMES): the counts of a kind, failing when one failed.
+run_pool = rm -rf $(addprefix $(RESULTS)/,$(1)); $(MAKE) --no-print-directory -j$(JOBS) -Otarget $(2)
+summary  = sh tests/run-test.sh --summary $(RESULTS)/$(1) $(1) $(2)
+
 unit: $(UNIT_BINS)
-	@rm -rf $(RESULTS)/unit
-	@$(MAKE) --no-print-directory -j$(JOBS) -Otarget $(UNIT_RUNS)
-	@sh tests/run-test.sh --summary $(RESULTS)/unit unit $(UNIT_NAMES)
+	@$(call run_pool,unit,$(UNIT_RUNS)); $(call summary,unit,$(UNIT_NAMES))
 
 e2e: $(BIN) $(MESA_EVAL)
-	@rm -rf $(RESULTS)/e2e
-	@$(MAKE) --no-print-directory -j$(JOBS) -Otarget $(E2E_RUNS)
-	@sh tests/run-test.sh --summary $(RESULTS)/e2e e2e $(E2E_NAMES)
+	@$(call run_pool,e2e,$(E2E_RUNS)); $(call summary,e2e,$(E2E_NAMES))
 
 # unit and e2e in one pool of JOBS (check): no core waits for the other stage's last test.
 tests: $(UNIT_BINS) $(BIN) $(MESA_EVAL)
-	@rm -rf $(RESULTS)/unit $(RESULTS)/e2e
-	@$(MAKE) --no-print-directory -j$(JOBS) -Otarget $(UNIT_RUNS) $(E2E_RUNS)
-	@ok=1; sh tests/run-test.sh --summary $(RESULTS)/unit unit $(UNIT_NAMES) || ok=0; \
-	    sh tests/run-test.sh --summary $(RESULTS)/e2e e2e $(E2E_NAMES) && [ $$ok = 1 ]
+	@$(call run_pool,unit e2e,$(UNIT_RUNS) $(E2E_RUNS)); ok=1; \
+	    $(call summary,unit,$(UNIT_NAMES)) || ok=0; $(call summary,e2e,$(E2E_NAMES)) && [ $$ok = 1 ]
 
 $(UNIT_RUNS): unit/%:
 	@sh tests/run-test.sh $(RESULTS)/unit $* $(BUILD)/tests/$*
