@@ -367,6 +367,16 @@ static const char *const divergent[] = {
     "float s = 0.0; for (int i = 0; i < int(x * 5000.0); i++) s += 1.0; s",
     /* the precisions' rounding over many operations */
     "float acc = x; for (int i = 0; i < 12; i++) acc = acc * v.x + v.y / (v.z + float(i)); acc",
+    /* the column forms of mix, clamp, min, max, sqrt (NaN, infinities, lo > hi, x < 0 in some
+     * elements), built-ins of constants computed once (a domain error in every element) */
+    "vec4(mix(x, v.y, v.z), clamp(x, v.x, v.y), sqrt(v.z), min(x, v.x))",
+    "vec3 a = max(v, vec3(x)); vec3 b = mix(v, v.zxy, x); vec3 c = clamp(v, -1.0, x); a + b * c",
+    "vec2(min(v.xy, x).y, sqrt(x * v.x))",
+    "vec3(pow(0.82, 2.2), log(-1.0), sqrt(-4.0)) * x",
+    "float c = 2.0; vec2(pow(c, x), exp(c) + inversesqrt(c - 2.0))",
+    /* errors while the elements still share one call stack and iteration count */
+    "float s = 0.0; for (int i = 0; i < 30000; i++) s += x; s",
+    "float g(float a) { if (a > 1e30) return a; } float f(float a) { return g(a) + 1.0; } f(2.0)",
 };
 
 static void test_divergent(void **state)
@@ -378,32 +388,6 @@ static void test_divergent(void **state)
             input_set in = random_inputs(round == 0 ? 1 : round == 1 ? 3 : MAX_ELEMENTS);
             if (compare_program(divergent[i], decl, 2, &in) < 0)
                 fail_msg("did not compile: %s", divergent[i]);
-        }
-}
-
-/* The column forms of the block interpreter: mix, clamp, min, max and sqrt on random lanes
- * (NaN, infinities, lo > hi, x < 0), built-ins of constants computed once (with a domain error
- * in every lane), and errors while the lanes still run in lockstep (every lane past the loop
- * bound, a call of a function that ends without return). */
-static const char *const columns[] = {
-    "vec4(mix(x, v.y, v.z), clamp(x, v.x, v.y), sqrt(v.z), min(x, v.x))",
-    "vec3 a = max(v, vec3(x)); vec3 b = mix(v, v.zxy, x); vec3 c = clamp(v, -1.0, x); a + b * c",
-    "vec2(min(v.xy, x).y, sqrt(x * v.x))",
-    "vec3(pow(0.82, 2.2), log(-1.0), sqrt(-4.0)) * x",
-    "float c = 2.0; vec2(pow(c, x), exp(c) + inversesqrt(c - 2.0))",
-    "float s = 0.0; for (int i = 0; i < 30000; i++) s += x; s",
-    "float g(float a) { if (a > 1e30) return a; } float f(float a) { return g(a) + 1.0; } f(2.0)",
-};
-
-static void test_columns(void **state)
-{
-    (void)state;
-    sc_lang_input decl[2] = {{"x", {SC_KIND_FLOAT, 1, 1}}, {"v", {SC_KIND_FLOAT, 1, 3}}};
-    for (size_t i = 0; i < sizeof columns / sizeof columns[0]; i++)
-        for (int round = 0; round < 2; round++) {
-            input_set in = random_inputs(round == 0 ? 3 : MAX_ELEMENTS);
-            if (compare_program(columns[i], decl, 2, &in) < 0)
-                fail_msg("did not compile: %s", columns[i]);
         }
 }
 
@@ -456,7 +440,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lang_corpus), cmocka_unit_test(test_mesa_cases),
         cmocka_unit_test(test_divergent),   cmocka_unit_test(test_disney),
-        cmocka_unit_test(test_edges),       cmocka_unit_test(test_columns),
+        cmocka_unit_test(test_edges),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
