@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "shadecalc/batch.h"
 
@@ -66,6 +67,7 @@ static void shade_many(const sc_scene *scene, sc_prec prec, const double eye[3],
     sc_shade_point at[CHUNK];
     sc_shade_result r[CHUNK];
     int index[CHUNK], m = 0;
+    memset(at, 0, sizeof at); /* gcc -fsanitize: "may be used uninitialized" when m = 0 */
     for (int i = 0; i < n; i++) {
         rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = 0.0f;
         if (shade_point(eye, &in[i], &at[m]) == 0) {
