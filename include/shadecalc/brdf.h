@@ -3,6 +3,7 @@
  *
  *   sc_brdf, sc_brdf_init      a model, its variant (form) and parameters
  *   sc_brdf_eval               f(l, v) as RGB, with its terms (diffuse, specular, D, F, G)
+ *   sc_brdf_eval_many          the same at many points (a BRDF file's shader in blocks)
  *   sc_frame_make              an orthonormal frame (t, b, n) from n and an optional tangent
  *   sc_brdf_validate           the parameter domains, as a message
  *   sc_brdf_kind_name, sc_brdf_form_name
@@ -110,6 +111,19 @@ int sc_frame_make(const double n[3], const double *tangent, sc_frame *out);
 
 void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const double l[3],
                   const double v[3], sc_brdf_terms *out);
+
+/* One point of sc_brdf_eval_many: its frame (often shared by many points) and l, v. */
+typedef struct {
+    const sc_frame *frame;
+    double l[3], v[3];
+} sc_brdf_point;
+
+/* out[i] = sc_brdf_eval(p, b, pts[i].frame, pts[i].l, pts[i].v) for i < n, bit for bit; a BRDF
+ * file's shader runs over the points above the horizon in blocks (sc_brdf_file_eval_many).
+ * Returns n, or for a BRDF file whose shader failed, the index of the point whose evaluation
+ * failed first (0 if it had failed before the call). */
+int sc_brdf_eval_many(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                      sc_brdf_terms *out);
 
 int sc_brdf_validate(const sc_brdf *b, char *msg, size_t size);
 

@@ -10,6 +10,7 @@
  *   sc_brdf_file_defaults   their default values, as sc_brdf.file_values
  *   sc_brdf_file_set        NAME=VALUE from a spec: checked against its type and range
  *   sc_brdf_file_eval       BRDF(L, V, N, X, Y) at one point (sc_brdf_eval calls it)
+ *   sc_brdf_file_eval_many  the same at many points, in blocks (sc_brdf_eval_many calls it)
  *   sc_brdf_file_error      the first run-time error of a file's shader (loop bound)
  *   sc_brdf_export          a built-in model written as a .brdf file of the same math
  *
@@ -71,6 +72,13 @@ int sc_brdf_file_set(sc_brdf *b, const char *name, const char *value, char *err,
  * is NaN and the error is kept (sc_brdf_file_error); once it is, every evaluation gives NaN. */
 void sc_brdf_file_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const double l[3],
                        const double v[3], double f[3]);
+/* f[i] = BRDF(pts[i].l, pts[i].v, ...) for i < n, the same values as n calls of
+ * sc_brdf_file_eval (bit for bit), computed by the block execution of shadecalc/lang.h: the
+ * shader's dispatch is paid once per block of points. Returns n, or the index of the first point
+ * whose evaluation failed (0 if the shader had failed before): that point and the later ones
+ * are NaN, and the error is kept as sc_brdf_file_eval keeps it. */
+int sc_brdf_file_eval_many(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                           double (*f)[3]);
 /* The first run-time error ("NAME:LINE:COLUMN: message") or NULL. */
 const char *sc_brdf_file_error(const sc_brdf_file *f);
 

@@ -33,7 +33,8 @@ typedef struct {
 } sc_albedo_result;
 
 /* theta_i in degrees; order = Gauss–Legendre nodes per panel (2..32; 0 = default 16).
- * 0, or -1 if the lobe is too narrow to resolve (the error estimate is then +inf). */
+ * 0, or -1 if the lobe is too narrow to resolve (the error estimate is then +inf; also out of
+ * memory, with a NaN albedo). */
 int sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result *out);
 
 /* The worst relative reciprocity error over θ in {0, 10, …, 80, 89}° × φ in {0, 45, …, 315}°

@@ -6,6 +6,7 @@
  *                           shader-literature ADS forms, OpenGL 1.x or Direct3D 9 lighting
  *   sc_scene                lights, a model, the global ambient L_A
  *   sc_shade                L_o at a point, with every intermediate per light (for --explain)
+ *   sc_shade_many           the same at many points (a BRDF file's shader in blocks)
  *
  * docs/formulas.md §6:  L_o = c_amb ⊙ L_A + Σ_k [ c_amb ⊙ L_A,k + f(l_k, v) ⊙ E_L,k · cos̄θ_i,k ]
  *           where an area light's term is sc_area_eval's ∫ f L_e cos̄θ_i dω by its method
@@ -84,6 +85,10 @@ typedef struct {
 void sc_model_init(sc_model *m, sc_model_kind kind);
 
 void sc_shade(sc_prec p, const sc_scene *scene, const sc_shade_point *at, sc_shade_result *out);
+/* sc_shade at n points, bit for bit; with a BRDF file and no area light, f of each light at
+ * every point is one sc_brdf_eval_many (the file's shader in blocks). */
+void sc_shade_many(sc_prec p, const sc_scene *scene, int n, const sc_shade_point *at,
+                   sc_shade_result *out);
 
 SC_END_DECLS
 

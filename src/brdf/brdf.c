@@ -1,6 +1,7 @@
 /* BRDF dispatch, frames, defaults, names and validation (shadecalc/brdf.h). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "brdf/brdf_internal.h"
@@ -131,19 +132,27 @@ static void lambert(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf
     sc_scale3(p, b->diff, Q(1.0 / SC_PI), out->diffuse);
 }
 
+/* The cosines of out and g (out cleared); whether l and v are above the horizon (else f = 0). */
+static int geometry(sc_prec p, const sc_frame *frame, const double l[3], const double v[3],
+                    brdf_geometry *g, sc_brdf_terms *out)
+{
+    memset(out, 0, sizeof *out);
+    *g = (brdf_geometry){.frame = frame, .l = l, .v = v};
+    g->cos_i = sc_p_dot(p, frame->n, l, 3);
+    g->cos_o = sc_p_dot(p, frame->n, v, 3);
+    half_vector(p, g, g->h);
+    g->cos_h = sc_p_dot(p, frame->n, g->h, 3);
+    out->cos_i = g->cos_i;
+    out->cos_o = g->cos_o;
+    out->cos_h = g->cos_h;
+    return g->cos_i > 0.0 && g->cos_o > 0.0;
+}
+
 void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const double l[3],
                   const double v[3], sc_brdf_terms *out)
 {
-    memset(out, 0, sizeof *out);
-    brdf_geometry g = {.frame = frame, .l = l, .v = v};
-    g.cos_i = sc_p_dot(p, frame->n, l, 3);
-    g.cos_o = sc_p_dot(p, frame->n, v, 3);
-    half_vector(p, &g, g.h);
-    g.cos_h = sc_p_dot(p, frame->n, g.h, 3);
-    out->cos_i = g.cos_i;
-    out->cos_o = g.cos_o;
-    out->cos_h = g.cos_h;
-    if (!(g.cos_i > 0.0 && g.cos_o > 0.0))
+    brdf_geometry g;
+    if (!geometry(p, frame, l, v, &g, out))
         return; /* below the horizon: f = 0 */
     if (b->kind == SC_BRDF_FILE) {
         sc_brdf_file_eval(p, b, frame, l, v, out->f);
@@ -156,6 +165,60 @@ void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const doub
     models[b->kind](p, b, &g, out);
     for (int c = 0; c < 3; c++)
         out->f[c] = sc_p_add(p, out->diffuse[c], out->specular[c]);
+}
+
+/* Whether b is a BRDF file whose shader has failed. */
+static int file_failed(const sc_brdf *b)
+{
+    return b->kind == SC_BRDF_FILE && sc_brdf_file_error(b->file) != NULL;
+}
+
+/* sc_brdf_eval_many one point at a time. */
+static int eval_each(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                     sc_brdf_terms *out)
+{
+    int done = n;
+    for (int i = 0; i < n; i++) {
+        sc_brdf_eval(p, b, pts[i].frame, pts[i].l, pts[i].v, &out[i]);
+        if (done == n && file_failed(b))
+            done = i;
+    }
+    return done;
+}
+
+/* sc_brdf_eval_many of a BRDF file: the geometry of each point, then the shader over the points
+ * above the horizon (gathered into `above`). */
+static int eval_file_many(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                          sc_brdf_terms *out, sc_brdf_point *above, int *index, double (*f)[3])
+{
+    int m = 0, failed_before = file_failed(b);
+    for (int i = 0; i < n; i++) {
+        brdf_geometry g;
+        if (geometry(p, pts[i].frame, pts[i].l, pts[i].v, &g, &out[i])) {
+            above[m] = pts[i];
+            index[m++] = i;
+        }
+    }
+    int ran = sc_brdf_file_eval_many(p, b, m, above, f);
+    for (int j = 0; j < m; j++)
+        memcpy(out[index[j]].f, f[j], sizeof f[j]);
+    return failed_before ? 0 : ran < m ? index[ran] : n;
+}
+
+int sc_brdf_eval_many(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                      sc_brdf_terms *out)
+{
+    if (b->kind != SC_BRDF_FILE || n <= 0)
+        return eval_each(p, b, n, pts, out);
+    sc_brdf_point *above = malloc((size_t)n * sizeof *above);
+    int *index = malloc((size_t)n * sizeof *index);
+    double(*f)[3] = malloc((size_t)n * sizeof *f);
+    int done = above && index && f ? eval_file_many(p, b, n, pts, out, above, index, f)
+                                   : eval_each(p, b, n, pts, out); /* out of memory */
+    free(above);
+    free(index);
+    free(f);
+    return done;
 }
 
 /* ---- validation ---- */

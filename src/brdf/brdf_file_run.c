@@ -365,6 +365,77 @@ void sc_brdf_file_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const
     eval_points(p, b, 1, frame, (const double(*)[3])l, (const double(*)[3])v, (double(*)[3])f);
 }
 
+/* ---- many points: block execution ---- */
+
+/* Points per block execution: the input columns of one (at most 111 of them) stay within a
+ * megabyte. */
+enum { MANY_CHUNK = 1024, MANY_COLUMNS = SC_BRDF_FILE_MAX_VALUES + 3 * N_DIRECTIONS + 3 };
+
+/* The input columns of n points in buf (MANY_COLUMNS × n): every parameter's value repeated,
+ * then L, V, N, X, Y; *out the three output columns after them. */
+static void point_columns(const sc_brdf *b, int n, const sc_brdf_point *pts, double *buf,
+                          const double **in, double **out)
+{
+    int c = 0;
+    for (int k = 0; k < b->file->n_values; k++, c++) {
+        in[c] = buf + (size_t)c * (size_t)n;
+        for (int i = 0; i < n; i++)
+            buf[(size_t)c * (size_t)n + (size_t)i] = b->file_values[k];
+    }
+    for (int d = 0; d < N_DIRECTIONS; d++)
+        for (int k = 0; k < 3; k++, c++) {
+            double *column = buf + (size_t)c * (size_t)n;
+            in[c] = column;
+            for (int i = 0; i < n; i++) {
+                const sc_frame *fr = pts[i].frame;
+                const double *dirs[N_DIRECTIONS] = {pts[i].l, pts[i].v, fr->n, fr->t, fr->b};
+                column[i] = dirs[d][k];
+            }
+        }
+    for (int k = 0; k < 3; k++)
+        out[k] = buf + (size_t)(c + k) * (size_t)n;
+}
+
+/* Up to MANY_CHUNK points in one block execution; the points before the first that failed. */
+static int eval_chunk(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                      double (*f)[3], double *buf)
+{
+    const sc_brdf_file *file = b->file;
+    const double *in[MANY_COLUMNS];
+    double *out[3];
+    point_columns(b, n, pts, buf, in, out);
+    sc_lang_block job = {p, n, in, sc_program_values(file->prog) - 1, out, NULL, NULL};
+    sc_lang_error e;
+    long ran = sc_program_run_block(file->prog, &job, &e);
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            f[i][k] = i < ran ? out[k][i] : NAN;
+    if (ran < n)
+        record_error(file, &e);
+    return (int)ran;
+}
+
+int sc_brdf_file_eval_many(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                           double (*f)[3])
+{
+    const sc_brdf_file *file = b->file;
+    int chunk = n < MANY_CHUNK ? n : MANY_CHUNK, done = 0;
+    double *buf = malloc((size_t)MANY_COLUMNS * (size_t)(chunk > 0 ? chunk : 1) * sizeof *buf);
+    for (int i = 0; i < n; i++)
+        f[i][0] = f[i][1] = f[i][2] = NAN;
+    if (!buf) { /* out of memory: one point at a time */
+        for (; done < n && !atomic_load(&file->status->failed); done++)
+            eval_points(p, b, 1, pts[done].frame, &pts[done].l, &pts[done].v, &f[done]);
+        return done;
+    }
+    while (done < n && !atomic_load(&file->status->failed)) {
+        int count = n - done < chunk ? n - done : chunk;
+        done += eval_chunk(p, b, count, pts + done, f + done, buf);
+    }
+    free(buf);
+    return done;
+}
+
 const char *sc_brdf_file_error(const sc_brdf_file *f)
 {
     return atomic_load(&f->status->failed) ? f->status->message : NULL;

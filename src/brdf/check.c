@@ -3,6 +3,7 @@
 #include "shadecalc/check.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "util/quadrature.h"
@@ -94,7 +95,8 @@ static int panel_exponent(double w)
  * toward the mirror direction (θ_i, π) and breakpoints at θ_i and φ = π/2, 3π/2 (the kinks of
  * the Oren–Nayar max terms); the horizon θ_o = π/2 is an end, not a kink. */
 static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], double theta_i,
-                      int order, int panel_exp, double out[3])
+                      int order, int panel_exp, sc_brdf_point *ring, sc_brdf_terms *terms,
+                      double out[3])
 {
     double th[MAX_NODES], tw[MAX_NODES], ph[MAX_NODES], pw[MAX_NODES]; /* 99 KB: thread-safe */
     double bp[MAX_BREAKS];
@@ -106,15 +108,16 @@ static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], do
     int np = composite_nodes(bp, breakpoints(0.0, 2.0 * pi, pi, phi_kinks, 2, panel_exp, bp), order,
                              ph, pw);
     memset(out, 0, 3 * sizeof *out);
-    for (int i = 0; i < nt; i++) {
+    for (int i = 0; i < nt; i++) { /* a ring of constant θ_o at a time */
         double st = sin(th[i]), ct = cos(th[i]);
         for (int j = 0; j < np; j++) {
-            double v[3] = {st * cos(ph[j]), st * sin(ph[j]), ct};
-            sc_brdf_terms t;
-            sc_brdf_eval(SC_DOUBLE, b, f, l, v, &t);
+            ring[j] = (sc_brdf_point){f, {l[0], l[1], l[2]}, {st * cos(ph[j]), st * sin(ph[j]), ct}};
+        }
+        sc_brdf_eval_many(SC_DOUBLE, b, np, ring, terms);
+        for (int j = 0; j < np; j++) {
             double w = tw[i] * pw[j] * st * ct;
             for (int c = 0; c < 3; c++)
-                out[c] += w * t.f[c];
+                out[c] += w * terms[j].f[c];
         }
     }
 }
@@ -130,8 +133,19 @@ int sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result 
     double l[3] = {sin(th), 0.0, cos(th)}, coarse[3];
     double width = lobe_width(b);
     int resolved = width >= MIN_LOBE_WIDTH, panel_exp = panel_exponent(width);
-    integrate(b, &f, l, th, order, panel_exp, out->albedo);
-    integrate(b, &f, l, th, order / 2 > 1 ? order / 2 : 2, panel_exp, coarse);
+    sc_brdf_point *ring = malloc(MAX_NODES * sizeof *ring);
+    sc_brdf_terms *terms = malloc(MAX_NODES * sizeof *terms);
+    if (!ring || !terms) { /* out of memory: no estimate */
+        free(ring);
+        free(terms);
+        for (int c = 0; c < 3; c++)
+            out->albedo[c] = NAN, out->error[c] = INFINITY;
+        return -1;
+    }
+    integrate(b, &f, l, th, order, panel_exp, ring, terms, out->albedo);
+    integrate(b, &f, l, th, order / 2 > 1 ? order / 2 : 2, panel_exp, ring, terms, coarse);
+    free(ring);
+    free(terms);
     /* plus the staircase of the lobe as double evaluates it: cos^m θ with m ~ 8/width²
      * carries a relative rounding error up to m·2^-53 (see MIN_LOBE_WIDTH) */
     double staircase = 8.0 * 0x1p-53 / (width * width);
@@ -149,6 +163,8 @@ double sc_reciprocity_error(const sc_brdf *b, double worst_l[3], double worst_v[
     sc_frame_make(n, t, &f);
     double worst = 0.0;
     double dirs[10 * 8][3];
+    sc_brdf_point pts[2 * 10 * 8];
+    sc_brdf_terms terms[2 * 10 * 8];
     int nd = 0;
     for (int i = 0; i < 10; i++)
         for (int j = 0; j < 8; j++) {
@@ -158,11 +174,19 @@ double sc_reciprocity_error(const sc_brdf *b, double worst_l[3], double worst_v[
             dirs[nd][2] = cos(th);
             nd++;
         }
-    for (int a = 0; a < nd; a++)
+    for (int a = 0; a < nd; a++) { /* f(l, v) and f(v, l) for every v after l: a batch */
+        int pairs = 0;
+        for (int c = a + 1; c < nd; c++, pairs += 2) {
+            pts[pairs] = (sc_brdf_point){&f, {0}, {0}};
+            memcpy(pts[pairs].l, dirs[a], sizeof dirs[a]);
+            memcpy(pts[pairs].v, dirs[c], sizeof dirs[c]);
+            pts[pairs + 1] = (sc_brdf_point){&f, {0}, {0}};
+            memcpy(pts[pairs + 1].l, dirs[c], sizeof dirs[c]);
+            memcpy(pts[pairs + 1].v, dirs[a], sizeof dirs[a]);
+        }
+        sc_brdf_eval_many(SC_DOUBLE, b, pairs, pts, terms);
         for (int c = a + 1; c < nd; c++) {
-            sc_brdf_terms lv, vl;
-            sc_brdf_eval(SC_DOUBLE, b, &f, dirs[a], dirs[c], &lv);
-            sc_brdf_eval(SC_DOUBLE, b, &f, dirs[c], dirs[a], &vl);
+            const sc_brdf_terms lv = terms[2 * (c - a - 1)], vl = terms[2 * (c - a - 1) + 1];
             double big = fmax(fabs(lv.f[0]), fabs(vl.f[0]));
             double e = big > 0.0 ? fabs(lv.f[0] - vl.f[0]) / big : 0.0;
             if (e > worst) {
@@ -173,5 +197,6 @@ double sc_reciprocity_error(const sc_brdf *b, double worst_l[3], double worst_v[
                     memcpy(worst_v, dirs[c], sizeof dirs[c]);
             }
         }
+    }
     return worst;
 }

@@ -172,6 +172,7 @@ static int shader_failed(const sc_model *m, char *err, size_t errsize)
     return why ? -1 : 0;
 }
 
+/* eval of shading with lights: L_o of one row. */
 static int eval_row(void *user, int worker, const double *vars, double *results, char *err,
                     size_t errsize)
 {
@@ -183,12 +184,6 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
     sc_shade_point at = s->at;
     double l[3];
     place(s, vars, &at, l);
-    if (s->brdf_only) {
-        sc_brdf_terms terms;
-        sc_brdf_eval(s->prec, &w->model.brdf, &at.frame, l, at.v, &terms);
-        memcpy(results, terms.f, sizeof terms.f);
-        return shader_failed(&w->model, err, errsize);
-    }
     for (int k = 0; moves_l(s) && k < s->setup.n_lights; k++)
         if (w->lights[k].kind == SC_LIGHT_DIRECTIONAL)
             memcpy(w->lights[k].dir, l, sizeof l);
@@ -202,6 +197,74 @@ static int eval_row(void *user, int worker, const double *vars, double *results,
     sc_shade(s->prec, &scene, &at, &r);
     memcpy(results, r.L, sizeof r.L);
     return shader_failed(&w->model, err, errsize);
+}
+
+/* The rows of a BRDF alone (no light) that share one BRDF (rows first .. first + n - 1 of the
+ * block), evaluated together; the rows done, as eval_block counts them. */
+typedef struct {
+    sc_brdf brdf;
+    int first, n;
+} brdf_run;
+
+static int flush_run(const shade_plan *s, const brdf_run *run, const sc_brdf_point *pts,
+                     sc_brdf_terms *terms, double *results, char *err, size_t errsize)
+{
+    int done = sc_brdf_eval_many(s->prec, &run->brdf, run->n, pts + run->first,
+                                 terms + run->first);
+    for (int i = run->first; i < run->first + done; i++)
+        memcpy(results + 3 * (size_t)i, terms[i].f, sizeof terms[i].f);
+    if (done < run->n)
+        snprintf(err, errsize, "%s", sc_brdf_file_error(run->brdf.file));
+    return run->first + done;
+}
+
+static int eval_brdf_rows_in(const shade_plan *s, worker_state *w, int count, const double *vars,
+                             double *results, sc_brdf_point *pts, sc_brdf_terms *terms,
+                             char *err, size_t errsize)
+{
+    brdf_run run = {w->model.brdf, 0, 0};
+    for (int i = 0; i < count; i++) {
+        const double *row = vars + (size_t)i * (size_t)s->grid->n;
+        if (update_specs(s, w, row, err, errsize) < 0) {
+            char why[256];
+            snprintf(why, sizeof why, "%s", err); /* the rows before it first */
+            int done = flush_run(s, &run, pts, terms, results, err, errsize);
+            if (done == i)
+                snprintf(err, errsize, "%s", why);
+            return done;
+        }
+        if (memcmp(&run.brdf, &w->model.brdf, sizeof run.brdf) != 0) {
+            int done = flush_run(s, &run, pts, terms, results, err, errsize);
+            if (done < i)
+                return done;
+            run = (brdf_run){w->model.brdf, i, 0};
+        }
+        sc_shade_point at = s->at;
+        place(s, row, &at, pts[i].l);
+        pts[i].frame = &s->at.frame;
+        memcpy(pts[i].v, at.v, sizeof at.v);
+        run.n++;
+    }
+    return flush_run(s, &run, pts, terms, results, err, errsize);
+}
+
+/* eval_block of a BRDF alone: f(l, v) of many rows through sc_brdf_eval_many (a BRDF file's
+ * shader in blocks), the same values as eval_row gives row by row. */
+static int eval_brdf_rows(void *user, int worker, int count, const double *vars, double *results,
+                          char *err, size_t errsize)
+{
+    const shade_plan *s = user;
+    sc_brdf_point *pts = malloc((size_t)count * sizeof *pts);
+    sc_brdf_terms *terms = malloc((size_t)count * sizeof *terms);
+    int done = 0;
+    if (pts && terms)
+        done = eval_brdf_rows_in(s, &s->workers[worker], count, vars, results, pts, terms, err,
+                                 errsize);
+    else
+        snprintf(err, errsize, "out of memory");
+    free(pts);
+    free(terms);
+    return done;
 }
 
 static void destroy(void *user)
@@ -399,7 +462,10 @@ int sweep_shade_plan(const sweep_setup_args *a, const sc_sweep_grid *g, sc_prec 
     plan->columns[2] = "b";
     plan->rgb = 1;
     plan->unused = unused_vars(s);
-    plan->eval = eval_row;
+    if (s->brdf_only)
+        plan->eval_block = eval_brdf_rows;
+    else
+        plan->eval = eval_row;
     plan->user = s;
     plan->destroy = destroy;
     describe(s, a, plan);

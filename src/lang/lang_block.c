@@ -7,7 +7,8 @@
  * spell out sc_round for double and highp so that the compiler can vectorise them), and every
  * other operation calls the same element function (lang_vm.h).
  *
- * Divergence: each lane has its own instruction address (pc), call stack and iteration count.
+ * Divergence: each lane has its own instruction address (pc), call stack and iteration count
+ * (shared by every lane until the block first diverges: they are then the same).
  * While every running lane is at one address the block is "uniform" and runs unmasked; when a
  * branch or a return sends lanes to different addresses, each step runs the instruction at the
  * lowest address for the lanes that are there (an execution mask, as a list of lanes), and the
@@ -20,6 +21,7 @@
  * then (a generation number per register says whether it was written in this block), so a block
  * costs what its instructions cost. Errors stop only their lane. */
 #include <limits.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -80,6 +82,7 @@ typedef struct {
     unsigned cur;
     int *pcs, *sps, *stack; /* per lane; pcs only while the block is not uniform */
     long *iterations;
+    int lockstep; /* the block has not diverged: sps, stack, iterations of lane cap serve all */
     int *live, n_live; /* lanes still running, ascending */
     int *sel;          /* the lanes of a masked step */
     unsigned char *stopped;
@@ -363,25 +366,139 @@ static void check_domain(const block_machine *m, const insn *in, const sc_builti
         forward_domain(&l, in->line, in->column, name, rule);
 }
 
+/* ---- column forms of the cheap component-wise built-ins ---- */
+
+/* mix, clamp, min, max and sqrt in highp, as sc_p_mix ... sc_p_sqrt compute them: the binary32
+ * function of src/math/common.c and sqrt.c on the arguments rounded to binary32 (the same
+ * operations in the same order), the result exact in binary64. */
+#define F32(x) ((float)(x))
+static void column_highp(const sc_builtin_scalar *f, double *d, const double *const *c, lanes s)
+{
+    const double *x = c[0], *y = c[1], *z = c[2];
+    if (f->f3 == sc_p_mix)
+        FOR_LANES(s, i, d[i] = (double)(F32(x[i]) * (1.0f - F32(z[i])) + F32(y[i]) * F32(z[i])););
+    else if (f->f3 == sc_p_clamp)
+        FOR_LANES(s, i, float v = F32(x[i]) < F32(y[i]) ? F32(y[i]) : F32(x[i]);
+                  d[i] = (double)(F32(z[i]) < v ? F32(z[i]) : v););
+    else if (f->f2 == sc_p_min)
+        FOR_LANES(s, i, d[i] = (double)(F32(y[i]) < F32(x[i]) ? F32(y[i]) : F32(x[i])););
+    else if (f->f2 == sc_p_max)
+        FOR_LANES(s, i, d[i] = (double)(F32(x[i]) < F32(y[i]) ? F32(y[i]) : F32(x[i])););
+    else
+        FOR_LANES(s, i, d[i] = (double)F32(sqrt((double)F32(x[i]))););
+}
+
+/* The same in double: the GLSL ES §8.3 defining formulas of src/pmath.c in binary64. */
+static void column_double(const sc_builtin_scalar *f, double *d, const double *const *c, lanes s)
+{
+    const double *x = c[0], *y = c[1], *z = c[2];
+    if (f->f3 == sc_p_mix)
+        FOR_LANES(s, i, d[i] = x[i] * (1.0 - z[i]) + y[i] * z[i];);
+    else if (f->f3 == sc_p_clamp)
+        FOR_LANES(s, i, double v = x[i] < y[i] ? y[i] : x[i]; d[i] = z[i] < v ? z[i] : v;);
+    else if (f->f2 == sc_p_min)
+        FOR_LANES(s, i, d[i] = y[i] < x[i] ? y[i] : x[i];);
+    else if (f->f2 == sc_p_max)
+        FOR_LANES(s, i, d[i] = x[i] < y[i] ? y[i] : x[i];);
+    else
+        FOR_LANES(s, i, d[i] = sqrt(x[i]););
+}
+
+static int has_column_form(sc_prec p, const sc_builtin_scalar *f)
+{
+    return (p == SC_HIGHP || p == SC_DOUBLE) &&
+           (f->f3 == sc_p_mix || f->f3 == sc_p_clamp || f->f2 == sc_p_min ||
+            f->f2 == sc_p_max || f->f1 == sc_p_sqrt);
+}
+
+/* Whether the columns c[0..n) hold the same bits in every lane of s. */
+static int same_in_lanes(const double *const *c, int n, lanes s)
+{
+    int first = s.idx ? s.idx[0] : 0, differ = 0;
+    for (int j = 0; j < n; j++) {
+        const double *x = c[j];
+        FOR_LANES(s, i, differ |= memcmp(&x[i], &x[first], sizeof *x) != 0;);
+    }
+    return !differ;
+}
+
+/* Column d of the scalar function f for the lanes of s. */
+static void scalar_lanes(sc_prec p, const sc_builtin_scalar *f, double *d, const double *const *c,
+                         lanes s)
+{
+    if (f->f1)
+        FOR_LANES(s, i, d[i] = f->f1(p, c[0][i]););
+    else if (f->f2)
+        FOR_LANES(s, i, d[i] = f->f2(p, c[0][i], c[1][i]););
+    else
+        FOR_LANES(s, i, d[i] = f->f3(p, c[0][i], c[1][i], c[2][i]););
+}
+
+/* The same when the arguments are the same in every lane (a function of constants, such as
+ * pow(baseColor.r, 2.2)): computed once. */
+static void scalar_once(sc_prec p, const sc_builtin_scalar *f, double *d, const double *const *c,
+                        lanes s)
+{
+    int first = s.idx ? s.idx[0] : 0;
+    const double *x[3] = {c[0] + first, c[1] ? c[1] + first : NULL, c[2] ? c[2] + first : NULL};
+    double v;
+    scalar_lanes(p, f, &v, x, (lanes){NULL, 1});
+    FOR_LANES(s, i, d[i] = v;);
+}
+
+/* Whether a lane of s may be outside f's domain: a vectorisable scan for sqrt and clamp (the
+ * rules of their domain functions in expr/builtins.c), 1 for the others. */
+static int may_leave_domain(const sc_builtin_scalar *f, const double *const *c, lanes s)
+{
+    int outside = 0;
+    if (f->f1 == sc_p_sqrt)
+        FOR_LANES(s, i, outside |= c[0][i] < 0.0;);
+    else if (f->f3 == sc_p_clamp)
+        FOR_LANES(s, i, outside |= c[1][i] > c[2][i];);
+    else
+        return 1;
+    return outside;
+}
+
+/* Reports the lanes of s whose arguments are outside f's domain (checked once if the arguments
+ * are the same in every lane). */
+static void check_domains(const block_machine *m, const insn *in, const sc_builtin_scalar *f,
+                          const double *const *c, int same, lanes s)
+{
+    const char *name = sc_builtin_name(m->prog->calls[in->c].index);
+    if (same) {
+        int first = s.idx ? s.idx[0] : 0;
+        double a[3] = {c[0][first], c[1] ? c[1][first] : 0, c[2] ? c[2][first] : 0};
+        if (!f->domain(a))
+            return;
+    } else if (!may_leave_domain(f, c, s)) {
+        return;
+    }
+    FOR_LANES(s, i, check_domain(m, in, f, name, c, i););
+}
+
 /* A component-wise float built-in: its scalar function over each component's column. */
 static void builtin_columns(block_machine *m, const insn *in, const builtin_call *call,
                             const sc_builtin_scalar *f, lanes s)
 {
-    const char *name = sc_builtin_name(call->index);
     sc_prec p = m->p;
+    int column_form = has_column_form(p, f);
     for (int k = 0; k < size_of(call->result); k++) {
         const double *c[3] = {NULL, NULL, NULL};
         for (int j = 0; j < call->n_args; j++)
             c[j] = col(m, call->args[j] + (sc_lt_is_scalar(call->types[j]) ? 0 : k));
         double *d = col(m, in->dst + k);
+        int same = !column_form && same_in_lanes(c, call->n_args, s);
         if (f->domain)
-            FOR_LANES(s, i, check_domain(m, in, f, name, c, i););
-        if (f->f1)
-            FOR_LANES(s, i, d[i] = f->f1(p, c[0][i]););
-        else if (f->f2)
-            FOR_LANES(s, i, d[i] = f->f2(p, c[0][i], c[1][i]););
+            check_domains(m, in, f, c, same, s);
+        if (same)
+            scalar_once(p, f, d, c, s);
+        else if (!column_form)
+            scalar_lanes(p, f, d, c, s);
+        else if (p == SC_HIGHP)
+            column_highp(f, d, c, s);
         else
-            FOR_LANES(s, i, d[i] = f->f3(p, c[0][i], c[1][i], c[2][i]););
+            column_double(f, d, c, s);
     }
 }
 
@@ -502,22 +619,34 @@ static int branch(block_machine *m, const insn *in, int pc, lanes s)
     return DIVERGED;
 }
 
-static void iteration_lane(block_machine *m, const insn *in, int lane)
+/* Until the block first diverges, its lanes run in lockstep: they have run the same
+ * instructions, so one call stack and one iteration count, those of the extra lane m->cap,
+ * stand for every lane's (see diverge). */
+
+static void fail_lanes(block_machine *m, const sc_lang_error *e, lanes s)
+{
+    FOR_LANES(s, i, fail_lane(m, i, e););
+}
+
+static void iteration_lane(block_machine *m, const insn *in, int lane, lanes s)
 {
     long bound = m->prog->max_iterations;
     if (++m->iterations[lane] <= bound)
         return;
     sc_lang_error e;
     vm_too_many_iterations(in, bound, &e);
-    fail_lane(m, lane, &e);
+    fail_lanes(m, &e, s);
 }
 
 static void count_iteration(block_machine *m, const insn *in, lanes s)
 {
-    FOR_LANES(s, i, iteration_lane(m, in, i););
+    if (m->lockstep)
+        iteration_lane(m, in, m->cap, s);
+    else
+        FOR_LANES(s, i, iteration_lane(m, in, i, (lanes){&i, 1}););
 }
 
-static void call_lane(block_machine *m, const insn *in, int pc, int lane)
+static void call_lane(block_machine *m, const insn *in, int pc, int lane, lanes s)
 {
     if (m->sps[lane] <= m->prog->max_call_depth) {
         m->stack[lane * m->depth + m->sps[lane]++] = pc + 1;
@@ -525,21 +654,39 @@ static void call_lane(block_machine *m, const insn *in, int pc, int lane)
     }
     sc_lang_error e;
     vm_too_deep(in, m->sps[lane], &e);
-    fail_lane(m, lane, &e);
+    fail_lanes(m, &e, s);
 }
 
 static int call(block_machine *m, const insn *in, int pc, lanes s)
 {
-    FOR_LANES(s, i, call_lane(m, in, pc, i););
+    if (m->lockstep)
+        call_lane(m, in, pc, m->cap, s);
+    else
+        FOR_LANES(s, i, call_lane(m, in, pc, i, (lanes){&i, 1}););
     return in->c;
 }
 
 static int ret(block_machine *m, lanes s)
 {
+    if (m->lockstep)
+        return m->stack[m->cap * m->depth + --m->sps[m->cap]];
     FOR_LANES(s, i, m->pcs[i] = m->stack[i * m->depth + --m->sps[i]];);
     int first = m->pcs[s.idx ? s.idx[0] : 0], same = 1;
     FOR_LANES(s, i, same &= m->pcs[i] == first;);
     return same ? first : DIVERGED;
+}
+
+/* The lanes part: each running lane takes the shared call stack and iteration count. */
+static void diverge(block_machine *m)
+{
+    int shared = m->cap, sp = m->sps[shared];
+    for (int j = 0; j < m->n_live; j++) {
+        int lane = m->live[j];
+        m->sps[lane] = sp;
+        m->iterations[lane] = m->iterations[shared];
+        memcpy(m->stack + lane * m->depth, m->stack + shared * m->depth, (size_t)sp * sizeof(int));
+    }
+    m->lockstep = 0;
 }
 
 static void no_return(block_machine *m, const insn *in, lanes s)
@@ -634,6 +781,8 @@ static void run_lanes(block_machine *m)
         const insn *in = &m->prog->code[pc];
         prepare(m, in, s);
         int next = step(m, in, pc, s), stopped = m->n_stopped;
+        if (next == DIVERGED && m->lockstep)
+            diverge(m);
         if (stopped)
             drop_stopped(m);
         if (m->n_live == 0)
@@ -702,12 +851,12 @@ static void start_block(block_machine *m, long base, int width)
         for (int k = 0; k < size_of(pr->input_types[i]); k++)
             fill_input(m, pr->input_regs[i] + k, m->job->inputs[column++] + base,
                        (sc_kind)pr->input_types[i].kind);
-    for (int i = 0; i < width; i++) {
+    for (int i = 0; i < width; i++)
         m->live[i] = i;
-        m->sps[i] = 0;
-        m->iterations[i] = 0;
-    }
     m->n_live = width;
+    m->lockstep = 1;
+    m->sps[m->cap] = 0;
+    m->iterations[m->cap] = 0;
 }
 
 static int lanes_for(const sc_program *prog, long n)
@@ -723,9 +872,9 @@ static int allocate(block_machine *m)
     m->r = malloc((regs + 2) * cap * sizeof *m->r); /* and two scratch columns */
     m->gen = calloc(regs, sizeof *m->gen);
     m->pcs = malloc(cap * sizeof *m->pcs);
-    m->sps = malloc(cap * sizeof *m->sps);
-    m->stack = malloc(cap * (size_t)m->depth * sizeof *m->stack);
-    m->iterations = malloc(cap * sizeof *m->iterations);
+    m->sps = malloc((cap + 1) * sizeof *m->sps); /* and the lockstep lane */
+    m->stack = malloc((cap + 1) * (size_t)m->depth * sizeof *m->stack);
+    m->iterations = malloc((cap + 1) * sizeof *m->iterations);
     m->live = malloc(cap * sizeof *m->live);
     m->sel = malloc(cap * sizeof *m->sel);
     m->stopped = calloc(cap, 1);

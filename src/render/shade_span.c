@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "shadecalc/batch.h"
 
@@ -30,27 +31,54 @@ static void shade_chunk(const sc_batch_plan *plan, const double eye[3], int n,
             rgb[3 * i + c] = out[c][i];
 }
 
-static void shade_one(const sc_scene *scene, sc_prec prec, const double eye[3],
-                      const render_shade_input *in, float rgb[3])
+/* The point of in seen from eye; -1 if its normal makes no frame. */
+static int shade_point(const double eye[3], const render_shade_input *in, sc_shade_point *at)
 {
-    sc_shade_point at;
     double v[3], len2 = 0.0;
     for (int c = 0; c < 3; c++) {
-        at.pos[c] = in->pos[c];
+        at->pos[c] = in->pos[c];
         v[c] = eye[c] - in->pos[c];
         len2 += v[c] * v[c];
     }
     double len = sqrt(len2);
     for (int c = 0; c < 3; c++)
-        at.v[c] = len > 0.0 ? v[c] / len : in->normal[c];
+        at->v[c] = len > 0.0 ? v[c] / len : in->normal[c];
+    return sc_frame_make(in->normal, NULL, &at->frame);
+}
+
+static void shade_one(const sc_scene *scene, sc_prec prec, const double eye[3],
+                      const render_shade_input *in, float rgb[3])
+{
+    sc_shade_point at;
     sc_shade_result r = {.per_light = NULL};
-    if (sc_frame_make(in->normal, NULL, &at.frame) < 0) {
+    if (shade_point(eye, in, &at) < 0) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         return;
     }
     sc_shade(prec, scene, &at, &r);
     for (int c = 0; c < 3; c++)
         rgb[c] = (float)r.L[c];
+}
+
+/* Up to CHUNK points through sc_shade_many (a BRDF file's shader in blocks). */
+static void shade_many(const sc_scene *scene, sc_prec prec, const double eye[3], int n,
+                       const render_shade_input *in, float *rgb)
+{
+    sc_shade_point at[CHUNK];
+    sc_shade_result r[CHUNK];
+    int index[CHUNK], m = 0;
+    memset(at, 0, sizeof at); /* gcc -fsanitize: "may be used uninitialized" when m = 0 */
+    for (int i = 0; i < n; i++) {
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = 0.0f;
+        if (shade_point(eye, &in[i], &at[m]) == 0) {
+            r[m].per_light = NULL;
+            index[m++] = i;
+        }
+    }
+    sc_shade_many(prec, scene, m, at, r);
+    for (int j = 0; j < m; j++)
+        for (int c = 0; c < 3; c++)
+            rgb[3 * index[j] + c] = (float)r[j].L[c];
 }
 
 int render_shader_init(render_shader *sh, const sc_scene *scene, sc_prec prec, const char *tier,
@@ -74,10 +102,14 @@ void render_shader_free(render_shader *sh)
 void render_shade_span(const render_shader *sh, const double eye[3], int n,
                        const render_shade_input *in, float *rgb)
 {
-    if (sh->plan)
-        for (int i = 0; i < n; i += CHUNK)
-            shade_chunk(sh->plan, eye, n - i < CHUNK ? n - i : CHUNK, in + i, rgb + 3 * i);
-    for (int i = 0; i < n; i++) /* the kernel's 0·inf where its float sums overflow: sc_shade */
-        if (!sh->plan || isnan(rgb[3 * i]) || isnan(rgb[3 * i + 1]) || isnan(rgb[3 * i + 2]))
+    for (int i = 0; i < n; i += CHUNK) {
+        int count = n - i < CHUNK ? n - i : CHUNK;
+        if (sh->plan)
+            shade_chunk(sh->plan, eye, count, in + i, rgb + 3 * i);
+        else
+            shade_many(sh->scene, sh->prec, eye, count, in + i, rgb + 3 * i);
+    }
+    for (int i = 0; sh->plan && i < n; i++) /* the kernel's 0·inf where its float sums overflow */
+        if (isnan(rgb[3 * i]) || isnan(rgb[3 * i + 1]) || isnan(rgb[3 * i + 2]))
             shade_one(sh->scene, sh->prec, eye, &in[i], rgb + 3 * i);
 }

@@ -5,6 +5,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -251,6 +252,141 @@ static void runtime_errors_are_kept(void **state)
     sc_brdf_file_free(f);
 }
 
+/* ---- many points at once: the same bits as one at a time ---- */
+
+static uint64_t rng = 0x2545F4914F6CDD1Du;
+
+static double uniform01(void)
+{
+    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+    return (double)(rng >> 11) / 9007199254740992.0;
+}
+
+/* A random unit vector over the whole sphere (a quarter of the pairs above the horizon). */
+static void random_direction(double out[3])
+{
+    double z = 2.0 * uniform01() - 1.0, phi = 6.283185307179586 * uniform01();
+    double r = sqrt(1.0 - z * z);
+    out[0] = r * cos(phi), out[1] = r * sin(phi), out[2] = z;
+}
+
+static int same_bits(double a, double b)
+{
+    return (isnan(a) && isnan(b)) || memcmp(&a, &b, sizeof a) == 0;
+}
+
+static sc_brdf_file *load(const char *path)
+{
+    char err[512];
+    sc_brdf_file *f = NULL;
+    FILE *in = fopen(path, "r");
+    if (!in)
+        fail_msg("cannot open %s (run the unit tests from the source tree)", path);
+    char *text = calloc(1, 1 << 20);
+    assert_non_null(text);
+    size_t len = fread(text, 1, (1 << 20) - 1, in);
+    fclose(in);
+    text[len] = '\0';
+    f = sc_brdf_file_parse(text, path, err, sizeof err);
+    if (!f)
+        fail_msg("%s", err);
+    free(text);
+    return f;
+}
+
+enum { MANY = 2500 }; /* three chunks of the file's block execution, many blocks of lanes */
+
+/* tests/brdf/principled.brdf with every lobe on, over random directions in two frames: every
+ * term of sc_brdf_eval_many equals sc_brdf_eval's, in every precision. */
+static void many_points_agree_with_one_at_a_time(void **state)
+{
+    (void)state;
+    sc_brdf_file *f = load("tests/brdf/principled.brdf");
+    sc_brdf b;
+    sc_brdf_file_defaults(f, &b);
+    char err[256];
+    static const char *const set[][2] = {{"metal", "0.3"}, {"aniso", "0.6"}, {"sheen", "0.7"},
+                                         {"coat", "0.5"},  {"coat_gloss", "0.4"}};
+    for (size_t i = 0; i < sizeof set / sizeof set[0]; i++)
+        assert_int_equal(sc_brdf_file_set(&b, set[i][0], set[i][1], err, sizeof err), 0);
+    sc_frame frames[2];
+    const double n0[3] = {0, 0, 1}, n1[3] = {0.3, -0.2, 0.9}, t1[3] = {1, 1, 0};
+    assert_int_equal(sc_frame_make(n0, NULL, &frames[0]), 0);
+    assert_int_equal(sc_frame_make(n1, t1, &frames[1]), 0);
+    sc_brdf_point *pts = malloc(MANY * sizeof *pts);
+    sc_brdf_terms *many = malloc(MANY * sizeof *many);
+    assert_non_null(pts);
+    assert_non_null(many);
+    for (int i = 0; i < MANY; i++) {
+        pts[i].frame = &frames[i % 2];
+        random_direction(pts[i].l);
+        random_direction(pts[i].v);
+    }
+    for (int p = SC_DOUBLE; p <= SC_LOWP; p++) {
+        assert_int_equal(sc_brdf_eval_many((sc_prec)p, &b, MANY, pts, many), MANY);
+        for (int i = 0; i < MANY; i++) {
+            sc_brdf_terms one;
+            sc_brdf_eval((sc_prec)p, &b, pts[i].frame, pts[i].l, pts[i].v, &one);
+            const double *x = &one.f[0], *y = &many[i].f[0];
+            for (size_t k = 0; k < sizeof one / sizeof(double); k++)
+                if (!same_bits(x[k], y[k]))
+                    fail_msg("precision %d point %d term %zu: alone %a, many %a", p, i, k, x[k],
+                             y[k]);
+        }
+    }
+    assert_null(sc_brdf_file_error(f));
+    free(pts);
+    free(many);
+    sc_brdf_file_free(f);
+}
+
+/* A loop that runs away where L.x > 0.9 only: sc_brdf_eval_many stops at the first such point,
+ * as evaluations one at a time do, with the same message; the points before it keep their
+ * values, it and the later ones are NaN; a later call fails at once. */
+static void many_points_stop_at_the_first_error(void **state)
+{
+    (void)state;
+    static const char text[] =
+        "analytic\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)\n"
+        "{ float s = L.x; while (L.x > 0.9) s += 1.0; return vec3(s, V.z, 1); }\n"
+        "::end shader\n";
+    char err[512];
+    sc_brdf_file *alone = sc_brdf_file_parse(text, "runaway.brdf", err, sizeof err);
+    sc_brdf_file *many = sc_brdf_file_parse(text, "runaway.brdf", err, sizeof err);
+    assert_non_null(alone);
+    assert_non_null(many);
+    sc_brdf ba, bm;
+    sc_brdf_file_defaults(alone, &ba);
+    sc_brdf_file_defaults(many, &bm);
+    sc_frame frame;
+    const double n[3] = {0, 0, 1};
+    sc_frame_make(n, NULL, &frame);
+    enum { N = 700, BAD = 611 };
+    sc_brdf_point pts[N];
+    sc_brdf_terms out[N];
+    for (int i = 0; i < N; i++) {
+        double x = i == BAD || i == BAD + 40 ? 0.95 : 0.5 * uniform01();
+        pts[i] = (sc_brdf_point){&frame, {x, 0.0, sqrt(1.0 - x * x)}, {0.0, 0.6, 0.8}};
+    }
+    pts[3].v[2] = -0.8; /* below the horizon: f = 0 without the shader */
+    assert_int_equal(sc_brdf_eval_many(SC_HIGHP, &bm, N, pts, out), BAD);
+    int first_failed = N;
+    for (int i = 0; i < N; i++) {
+        sc_brdf_terms one;
+        sc_brdf_eval(SC_HIGHP, &ba, pts[i].frame, pts[i].l, pts[i].v, &one);
+        if (first_failed == N && sc_brdf_file_error(alone))
+            first_failed = i;
+        for (int k = 0; k < 3; k++)
+            assert_true(same_bits(one.f[k], out[i].f[k]));
+        assert_true(i < BAD ? !isnan(out[i].f[0]) : isnan(out[i].f[0]));
+    }
+    assert_int_equal(first_failed, BAD);
+    assert_string_equal(sc_brdf_file_error(alone), sc_brdf_file_error(many));
+    assert_int_equal(sc_brdf_eval_many(SC_HIGHP, &bm, 4, pts, out), 0);
+    sc_brdf_file_free(alone);
+    sc_brdf_file_free(many);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -258,6 +394,8 @@ int main(void)
         cmocka_unit_test(parser_errors_name_the_line),
         cmocka_unit_test(parameters_keep_their_types_and_ranges),
         cmocka_unit_test(runtime_errors_are_kept),
+        cmocka_unit_test(many_points_agree_with_one_at_a_time),
+        cmocka_unit_test(many_points_stop_at_the_first_error),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -352,6 +352,16 @@ static const char *const divergent[] = {
     "float s = 0.0; for (int i = 0; i < int(x * 5000.0); i++) s += 1.0; s",
     /* the precisions' rounding over many operations */
     "float acc = x; for (int i = 0; i < 12; i++) acc = acc * v.x + v.y / (v.z + float(i)); acc",
+    /* the column forms of mix, clamp, min, max, sqrt (NaN, infinities, lo > hi, x < 0 in some
+     * elements), built-ins of constants computed once (a domain error in every element) */
+    "vec4(mix(x, v.y, v.z), clamp(x, v.x, v.y), sqrt(v.z), min(x, v.x))",
+    "vec3 a = max(v, vec3(x)); vec3 b = mix(v, v.zxy, x); vec3 c = clamp(v, -1.0, x); a + b * c",
+    "vec2(min(v.xy, x).y, sqrt(x * v.x))",
+    "vec3(pow(0.82, 2.2), log(-1.0), sqrt(-4.0)) * x",
+    "float c = 2.0; vec2(pow(c, x), exp(c) + inversesqrt(c - 2.0))",
+    /* errors while the elements still share one call stack and iteration count */
+    "float s = 0.0; for (int i = 0; i < 30000; i++) s += x; s",
+    "float g(float a) { if (a > 1e30) return a; } float f(float a) { return g(a) + 1.0; } f(2.0)",
 };
 
 static void test_divergent(void **state)
