@@ -145,6 +145,20 @@ then echo "ok   area peers"; echo pass >>"$E2E_COUNTS"
 else echo "FAIL area peers"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
 fi
 
+# The compute bound of shade counts the operations each tier executes (issue 12): every tier,
+# AVX-512 included (16 lanes), has one, and none runs faster than it in cache.
+if "$SHADECALC" bench --n 4096 --repeat 3 --format json shade >"$e2e_tmp/shade.json" 2>"$e2e_tmp/err" &&
+    python3 - "$e2e_tmp/shade.json" <<'PY'
+import json, sys
+rows = [r for r in json.load(open(sys.argv[1]))["rows"] if r["tier"] != "loop" and not r["isa"].startswith("sleef")]
+assert rows
+for r in rows:
+    assert r["roofline_fraction"] is not None and 0 < r["roofline_fraction"] <= 1.0, r
+PY
+then echo "ok   shade roofline"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL shade roofline: a tier faster than its counted compute bound"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
+fi
+
 # The man page's tier table is the binary's own table (mk/man-tiers.sh regenerates it).
 if sh mk/man-tiers.sh "$SHADECALC" >"$e2e_tmp/tiers" 2>"$e2e_tmp/err" &&
     sed -n "/BEGIN tier table/,/END tier table/p" man/shadecalc.1 | sed '1d;$d' | cmp -s - "$e2e_tmp/tiers"
