@@ -12,6 +12,7 @@
 #include "shadecalc/accuracy.h"
 #include "batch/reference.h"
 #include "cli/progress.h"
+#include "simd/uniforms.h"
 
 enum { ACCURACY_SAMPLE = 1 << 16, MIN_SAMPLE_NS = 200000, MAX_ROWS = 4096 };
 
@@ -33,17 +34,71 @@ static const bench_scene scenes[] = {
 };
 enum { N_SCENES = (int)(sizeof scenes / sizeof scenes[0]) };
 
-/* Arithmetic operations per element of shade, counted from src/simd/shade_impl.h (an FMA, a
- * division or an estimate counts one): normalizing n and v and n·v; per light its direction,
- * falloff and spot factor, the cosine and the colour sums; the lobe. */
-static double shade_ops(const sc_scene *s)
+/* Arithmetic operations per element of shade, counted from its code (src/simd/scene_impl.h,
+ * shade_impl.h, spot_impl.h) for the tier measured: every vector instruction of the arithmetic
+ * counts one — an FMA, a compare, a select, a min or max, a division, a square root, an
+ * estimate — loads, stores, broadcasts of uniforms and the tests of rare lanes' branches not.
+ * Recount when the kernels change. The primitives as a tier computes them: */
+typedef struct {
+    double rsqrt_n; /* 1/√x of the normalizations (bits8 normalizes as bits12): accurate √ and
+                     * ÷ (2); fast an estimate and a Newton step: est, 2 mul, fma, mul (5) */
+    double unit;    /* a/|a| from a·a: max, then accurate √ and 3 ÷ (5), fast rsqrt_n + 3 mul */
+    double rcp;     /* 1/x: accurate ÷; bits12 est, mul, sub, mul (4); bits8 est */
+    double sqrt;    /* √x: accurate √; bits12 x · rsqrt_n (6); bits8 x · est (2) */
+} tier_costs;
+
+static tier_costs shade_tier_costs(const char *tier)
 {
-    static const double light[] = {0, 23, 23 + 30};
-    sc_brdf_kind kind = s->model.brdf.kind;
-    double lobe = kind == SC_BRDF_LAMBERT ? 0 : kind == SC_BRDF_BLINN_PHONG ? 46 : 52;
-    double ops = 33;
-    for (int k = 0; k < s->n_lights; k++)
-        ops += 19 + light[s->lights[k].kind] + lobe;
+    if (strcmp(tier, "accurate") == 0)
+        return (tier_costs){2, 5, 1, 1};
+    if (strcmp(tier, "bits12") == 0)
+        return (tier_costs){5, 9, 4, 6};
+    return (tier_costs){5, 9, 1, 2}; /* bits8 */
+}
+
+/* Multiplies of x^m by binary powering (pow_int): ⌊log2 m⌋ squarings, popcount(m) − 1
+ * products. The bench's lobes have integer m (32: 5). */
+static double pow_int_muls(double m)
+{
+    unsigned u = (unsigned)m, muls = 0;
+    for (unsigned b = u; b > 1; b >>= 1)
+        muls += 1 + (b & 1u);
+    return muls;
+}
+
+static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char *tier)
+{
+    tier_costs t = shade_tier_costs(tier);
+    const sc_brdf *b = &s->model.brdf;
+    /* n, v: two dots (6), the overflow test (2 compares, or: 3), two units; n·v (3) */
+    double ops = 12 + 2 * t.unit;
+    /* a light's direction and factor, by kind (light_dir): directional none; point p − pos (3),
+     * r² (3), max, min and 1/r² (2 + rcp), l (overflow compare + unit), the r = 0 lanes
+     * (compare, 3 selects), w = n·l falloff (1); a spot also −l·axis (4), the cone test (1),
+     * lobe_pow's 3 compares, and, select (5), its integer exponent raised in double (2 halves
+     * converted and back, extract, insert: 6; a product per power: 2 for the bench's
+     * exponent 2), 3 selects, the product with the falloff (1) */
+    double point = 14 + t.rcp + t.unit, spot = point + 22;
+    /* the lobe (own_specular; lobe factor and colours folded into the uniforms): h = l + v (3),
+     * h·h (3), max (1); then Blinn-Phong n·h = (n·l + n·v) rsqrt (add, mul, max: 3 + rsqrt_n),
+     * the cutoff (compare, select) and the squarings of pow_int; GGX −1/|h| (rsqrt_n), n·h
+     * (add, mul), d (mul, fma), g_v and g_l (each mul, fma, √, mul), 1/(d² (g_v + g_l)) (mul,
+     * add, mul, rcp), b = max(1 − v·h/|h|) (dot, fma, max: 5), b⁵ and F (mul, mul, mul, fma),
+     * D V F (mul); both then the lit select and product (2) and acc += (3 FMA) */
+    double lobe = 0;
+    if (b->kind == SC_BRDF_BLINN_PHONG)
+        lobe = 7 + 3 + t.rsqrt_n + 2 + pow_int_muls(b->m) + 5;
+    else if (b->kind == SC_BRDF_COOK_TORRANCE)
+        lobe = 7 + t.rsqrt_n + 4 + 2 * (3 + t.sqrt) + 3 + t.rcp + 5 + 5 + 5;
+    /* each light: n·l (3), the lit mask (2 compares, and), the weight select (1), acc += w E
+     * c_diff/π (3 FMA); in the generic loop (a scene of no straight-line variant) also its
+     * colours per vector (light_vecs_of: 6 mul) */
+    int generic = sc_batch_plan_uniforms(plan)->variant == 0;
+    for (int k = 0; k < s->n_lights; k++) {
+        sc_light_kind kind = s->lights[k].kind;
+        ops += 10 + (generic ? 6 : 0) + lobe;
+        ops += kind == SC_LIGHT_POINT ? point : kind == SC_LIGHT_SPOT ? spot : 0;
+    }
     return ops;
 }
 
@@ -326,7 +381,7 @@ static void roofline(const bench_state *st, const sc_batch_entry *e, const bench
                      bench_row *r)
 {
     const sc_scene *s = d->plan ? &d->scene : NULL;
-    double ops = s ? shade_ops(s) : e->ops;
+    double ops = s ? shade_ops(s, d->plan, e->tier) : e->ops;
     double compute = ops / (st->m->lane_ops_ns * width / 8.0);
     double bytes = 4.0 * (inputs_read(e, s) + e->n_out);
     double memory = st->m->bandwidth > 0 ? bytes / st->m->bandwidth : 0.0;

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "bench/bench.h"
+#include "simd/uniforms.h"
 
 #ifndef BENCH_LOOPS_LOOKUP
 #define BENCH_LOOPS_LOOKUP bench_libm_loop
@@ -102,6 +103,14 @@ static void loop_length(const sc_batch_args *a) { length_arrays(VEC3_IN(a), a->o
 
 /* ---- the shading equation as a user writes it: float, sqrtf, powf ---- */
 
+/* GGX D V = α²/(π d²) / (2 (n·l √(n·v² (1 − α²) + α²) + n·v √(n·l² (1 − α²) + α²))) */
+static inline float ggx_dv(float a2, float nh, float nl, float nv)
+{
+    float d = nh * nh * (a2 - 1.0f) + 1.0f;
+    return a2 / (SC_PI_F * d * d) * 0.5f /
+           (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
+}
+
 static float dot3(const float *a, const float *b)
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -168,12 +177,8 @@ static float specular(const user_scene *s, const float *n, const float *v, const
     float nh = fmaxf(dot3(n, h), 0.0f);
     if (s->brdf == SC_BRDF_BLINN_PHONG)
         return (s->m + 8.0f) / (8.0f * SC_PI_F) * powf(nh, s->m);
-    float a2 = s->alpha * s->alpha, d = nh * nh * (a2 - 1.0f) + 1.0f;
-    float D = a2 / (SC_PI_F * d * d);
-    float V = 0.5f /
-              (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
     float F = s->f0 + (1.0f - s->f0) * powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f);
-    return D * V * F;
+    return ggx_dv(s->alpha * s->alpha, nh, nl, nv) * F;
 }
 
 static float spot(const user_light *lt, const float *l)
@@ -348,18 +353,243 @@ static void loop_brdf(const sc_batch_args *a)
         unit(n);
         float nl = dot3(n, l), nv = dot3(n, v), h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
         unit(h);
-        float nh = fmaxf(dot3(n, h), 0.0f), d = nh * nh * (a2 - 1.0f) + 1.0f;
-        float D = a2 / (SC_PI_F * d * d);
-        float V = 0.5f /
-                  (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
+        float nh = fmaxf(dot3(n, h), 0.0f), DV = ggx_dv(a2, nh, nl, nv);
         float m5 = powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f);
         for (int c = 0; c < 3; c++) {
             float F = f0[c] + (1.0f - f0[c]) * m5;
-            float f = diff[c] / SC_PI_F + spec[c] * D * V * F;
+            float f = diff[c] / SC_PI_F + spec[c] * DV * F;
             a->out[c][i] = ((nl > 0.0f) & (nv > 0.0f)) ? f : 0.0f;
         }
     }
 }
+
+/* ---- the area lights' approximations (area_* kernels) as a user writes them ----
+ * The float formulas of light/area.c (representative point: sphere, tube) and light/ltc.c (LTC:
+ * rect, disk as the 64-gon of equal area), with the BRDF of the kernels' scenes (GGX, Smith
+ * height-correlated, Schlick with a grey F0 for the representative point). The uniforms are
+ * the kernels' own (sc_uniforms_shade: the light's geometry in float, the LTC table at the
+ * scene's α), computed once per call as the kernels do. Branches are selects, every operand
+ * computed: the loop bodies have no short-circuit. */
+
+/* The per-element functions are inlined into the loops (as a user who checked
+ * -fopt-info-vec would mark them): a call in the body keeps the loop scalar. */
+#if defined(__GNUC__)
+#define LOOP_INLINE inline __attribute__((always_inline))
+#else
+#define LOOP_INLINE inline
+#endif
+
+typedef struct {
+    float x, y, z;
+} f3;
+
+static LOOP_INLINE f3 f3_of(const float *v) { return (f3){v[0], v[1], v[2]}; }
+static LOOP_INLINE f3 f3_sub(f3 a, f3 b) { return (f3){a.x - b.x, a.y - b.y, a.z - b.z}; }
+static LOOP_INLINE f3 f3_axpy(float t, f3 a, f3 b)
+{
+    return (f3){t * a.x + b.x, t * a.y + b.y, t * a.z + b.z};
+}
+static LOOP_INLINE float f3_dot(f3 a, f3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static LOOP_INLINE f3 f3_cross(f3 a, f3 b)
+{
+    return (f3){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+static LOOP_INLINE f3 f3_unit(f3 a)
+{
+    float k = 1.0f / sqrtf(f3_dot(a, a));
+    return (f3){a.x * k, a.y * k, a.z * k};
+}
+static LOOP_INLINE f3 f3_pick(int c, f3 a, f3 b)
+{
+    return (f3){c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
+}
+
+/* Snyder's sphere irradiance at cos θ = ct, distance d > R (light/area.c) */
+static LOOP_INLINE float sphere_irradiance(float ct, float d, float R)
+{
+    float sr = R / d, s2 = sr * sr, above = ct > 0.0f ? SC_PI_F * s2 * ct : 0.0f;
+    float st = sqrtf(fmaxf(1.0f - ct * ct, 0.0f)), x = sqrtf(fmaxf((d - R) * (d + R), 0.0f)) / R;
+    float y = fminf(fmaxf(-x * ct / fmaxf(st, 1e-30f), -1.0f), 1.0f);
+    float s = st * sqrtf(fmaxf(1.0f - y * y, 0.0f));
+    float e = (ct * acosf(y) - x * s) * s2 + atan2f(s, x);
+    return ct * ct < s2 ? fmaxf(e, 0.0f) : above;
+}
+
+/* The emitter's irradiance over L_e on a plane of unit normal w (c: centre − p, dc = |c|):
+ * the ball, plus a tube's line of width 2R; π inside the ball. */
+static LOOP_INLINE float rp_irradiance(const sc_area_uniforms *u, int tube, f3 w, f3 c, float dc,
+                                       f3 p)
+{
+    float e = sphere_irradiance(f3_dot(w, c) / dc, dc, u->radius);
+    f3 l0 = f3_sub(f3_of(u->p0), p), l1 = f3_axpy(1.0f, f3_of(u->axis), l0);
+    float a0 = sqrtf(f3_dot(l0, l0)), a1 = sqrtf(f3_dot(l1, l1)), den = a0 * a1 + f3_dot(l0, l1);
+    float line = den > 0.0f ? (f3_dot(w, l0) / a0 + f3_dot(w, l1) / a1) / den : 0.0f;
+    e += tube ? fmaxf(0.0f, u->line * line) : 0.0f;
+    return dc <= u->radius ? SC_PI_F : e;
+}
+
+/* L_e ⊙ (c_diff/π E(n) + c_spec f_s(l_s) N E(l_s) cos θ_s) at one element (light/area.c) */
+static LOOP_INLINE f3 representative(const sc_shade_uniforms *s, int tube, f3 n, f3 v, f3 p)
+{
+    const sc_area_uniforms *u = &s->lights[0].area;
+    float R = u->radius, a2 = s->alpha * s->alpha;
+    n = f3_unit(n);
+    v = f3_unit(v);
+    float nv = f3_dot(n, v);
+    f3 c = f3_sub(f3_of(u->centre), p), r = f3_axpy(2.0f * nv, n, (f3){-v.x, -v.y, -v.z});
+    float dc = sqrtf(f3_dot(c, c)), e_diffuse = rp_irradiance(u, tube, n, c, dc, p);
+    /* the point of the axis closest to the reflected ray (the centre for a sphere) */
+    f3 l0 = f3_sub(f3_of(u->p0), p), ld = f3_of(u->axis);
+    float rd = f3_dot(r, ld), den = f3_dot(ld, ld) - rd * rd;
+    float t = den > 0.0f ? fminf(fmaxf((f3_dot(r, l0) * rd - f3_dot(l0, ld)) / den, 0.0f), 1.0f)
+                         : 0.5f;
+    f3 L = tube ? f3_axpy(t, ld, l0) : c;
+    float d = sqrtf(f3_dot(L, L));
+    f3 C = f3_sub((f3){r.x * f3_dot(L, r), r.y * f3_dot(L, r), r.z * f3_dot(L, r)}, L);
+    float cl = sqrtf(f3_dot(C, C)), toward = cl > 0.0f ? fminf(1.0f, R / cl) : 0.0f;
+    f3 P = f3_axpy(toward, C, L);
+    float pp = f3_dot(P, P);
+    f3 ls = f3_pick((d <= R) | (pp == 0.0f), r, f3_unit(P));
+    f3 h = f3_unit(f3_axpy(1.0f, ls, v));
+    float cos_s = f3_dot(n, ls), nh = fmaxf(f3_dot(n, h), 0.0f);
+    float F = s->f0 + (1.0f - s->f0) * powf(1.0f - fmaxf(f3_dot(v, h), 0.0f), 5.0f);
+    float across = fminf(1.0f, s->alpha + R / (2.0f * d));
+    float along = fminf(1.0f, s->alpha + u->half_along / (2.0f * d));
+    float norm = d > 0.0f ? a2 / (across * along) : a2;
+    float w = cos_s > 0.0f ? ggx_dv(a2, nh, cos_s, nv) * F * norm *
+                                 rp_irradiance(u, tube, ls, c, dc, p) * cos_s
+                           : 0.0f;
+    f3 e = f3_of(s->lights[0].color), kd = f3_of(s->diff_pi), ks = f3_of(s->spec);
+    f3 out = {e.x * (kd.x * e_diffuse + ks.x * w), e.y * (kd.y * e_diffuse + ks.y * w),
+              e.z * (kd.z * e_diffuse + ks.z * w)};
+    return f3_pick(nv > 0.0f, out, (f3){0.0f, 0.0f, 0.0f});
+}
+
+/* θ ẑ·ĉ/|c| of edge a→b (c = a × b, θ = atan2(|c|, a·b)); 0 for parallel ends */
+static LOOP_INLINE float edge_term(f3 a, f3 b)
+{
+    f3 c = f3_cross(a, b);
+    float s = sqrtf(f3_dot(c, c));
+    return s > 0.0f ? atan2f(s, f3_dot(a, b)) * c.z / s : 0.0f;
+}
+
+/* A convex polygon's clipped edge sum, edge by edge (as the kernels clip it): each edge a→b
+ * clipped to z >= 0, and the horizon edge from where the boundary leaves to where it enters. */
+typedef struct {
+    float sum;
+    f3 exit, entry;
+    int crossed;
+} clip_sum;
+
+/* Adds edge a→b where `valid`; *a2, *b2 its clipped ends; returns whether it is a segment. */
+static LOOP_INLINE int clip_edge(f3 a, f3 b, int valid, clip_sum *cs, f3 *a2, f3 *b2)
+{
+    float den = a.z - b.z, t = a.z / (den == 0.0f ? 1.0f : den);
+    f3 x = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), 0.0f};
+    int a_out = a.z < 0.0f, b_out = b.z < 0.0f;
+    int leaves = valid & !a_out & b_out, enters = valid & a_out & !b_out;
+    *a2 = f3_pick(a_out, x, a);
+    *b2 = f3_pick(b_out, x, b);
+    cs->exit = f3_pick(leaves, x, cs->exit);
+    cs->entry = f3_pick(enters, x, cs->entry);
+    cs->crossed |= leaves;
+    int seg = valid & (!a_out | !b_out);
+    cs->sum += seg ? edge_term(*a2, *b2) : 0.0f;
+    return seg;
+}
+
+/* M⁻¹ w, M⁻¹ = [[m00, 0, m02], [0, m11, 0], [m20, 0, 1]] */
+static LOOP_INLINE f3 ltc_carry(const float *m, f3 w)
+{
+    return (f3){m[0] * w.x + m[1] * w.z, m[2] * w.y, m[3] * w.x + w.z};
+}
+
+/* L_e ⊙ (c_diff/π ∫cos̄ + (c_spec F0 A + c_spec (1 − F0) B) lobe share / mass) (light/ltc.c) */
+static LOOP_INLINE f3 ltc(const sc_shade_uniforms *s, const float *ring, int sides, f3 n, f3 v,
+                          f3 p)
+{
+    const sc_area_uniforms *u = &s->lights[0].area;
+    n = f3_unit(n);
+    v = f3_unit(v);
+    float nv = f3_dot(n, v);
+    f3 q = f3_sub(f3_of(u->centre), p);
+    float h = -f3_dot(q, f3_of(u->normal));
+    int seen = (h > 0.0f) | (u->two_sided & (h < 0.0f));
+    /* the view frame: x = v in the tangent plane (a tangent where v is along n), y = n × x */
+    f3 x = f3_axpy(-nv, n, v), t = {1.0f - n.x * n.x, -n.x * n.y, -n.x * n.z};
+    f3 t_y = {-n.y * n.x, 1.0f - n.y * n.y, -n.y * n.z};
+    x = f3_unit(f3_pick(f3_dot(x, x) < 0x1p-40f, f3_pick(fabsf(n.x) < 0.9f, t, t_y), x));
+    f3 y = f3_cross(n, x), e1 = f3_of(u->e1), e2 = f3_of(u->e2);
+    q = (f3){f3_dot(q, x), f3_dot(q, y), f3_dot(q, n)};
+    e1 = (f3){f3_dot(e1, x), f3_dot(e1, y), f3_dot(e1, n)};
+    e2 = (f3){f3_dot(e2, x), f3_dot(e2, y), f3_dot(e2, n)};
+    /* the table's row at cos θ_v */
+    float ty = sqrtf(1.0f - fminf(fmaxf(nv, 0.0f), 1.0f)) * (float)(SC_LTC_ROWS - 1), m[SC_LTC_ROW];
+    int j = (int)ty > SC_LTC_ROWS - 2 ? SC_LTC_ROWS - 2 : (int)ty;
+    const float *lo = s->ltc_rows[j], *hi = s->ltc_rows[j + 1], fy = ty - (float)j;
+    m[0] = lo[0] + fy * (hi[0] - lo[0]), m[1] = lo[1] + fy * (hi[1] - lo[1]);
+    m[2] = lo[2] + fy * (hi[2] - lo[2]), m[3] = lo[3] + fy * (hi[3] - lo[3]);
+    m[4] = lo[4] + fy * (hi[4] - lo[4]), m[5] = lo[5] + fy * (hi[5] - lo[5]);
+    /* both edge sums: the polygon clipped to the horizon, and its image under M⁻¹ clipped */
+    f3 o = {0.0f, 0.0f, 0.0f}, a2, b2, c2, d2;
+    clip_sum first = {0.0f, o, o, 0}, second = first;
+    f3 v0 = f3_axpy(ring[0], e1, f3_axpy(ring[sides], e2, q)), a = v0;
+    for (int k = 1; k <= sides; k++) {
+        f3 b = k == sides ? v0 : f3_axpy(ring[k], e1, f3_axpy(ring[sides + k], e2, q));
+        int seg = clip_edge(a, b, 1, &first, &a2, &b2);
+        clip_edge(ltc_carry(m, a2), ltc_carry(m, b2), seg, &second, &c2, &d2);
+        a = b;
+    }
+    first.sum += first.crossed ? edge_term(first.exit, first.entry) : 0.0f;
+    clip_edge(ltc_carry(m, first.exit), ltc_carry(m, first.entry), first.crossed, &second, &c2,
+              &d2);
+    second.sum += second.crossed ? edge_term(second.exit, second.entry) : 0.0f;
+    float cosine = fminf(0.5f * fabsf(first.sum), SC_PI_F);
+    float lobe = fminf(0.5f / SC_PI_F * fabsf(second.sum), 1.0f);
+    float det = m[0] - m[1] * m[3], len = sqrtf(m[0] * m[0] + m[3] * m[3]);
+    float mass = ((det != 0.0f) & (len > 0.0f)) ? 0.5f * (1.0f + (det > 0.0f ? m[0] : -m[0]) / len)
+                                                : 0.0f;
+    float share = ((nv > 0.0f) & (mass > 1e-6f)) ? lobe / mass : 0.0f;
+    f3 e = f3_of(s->lights[0].color), kd = f3_of(s->diff_pi);
+    f3 spec = f3_axpy(m[4], f3_of(s->ltc_sa),
+                      (f3){s->ltc_sb[0] * m[5], s->ltc_sb[1] * m[5], s->ltc_sb[2] * m[5]});
+    f3 out = {e.x * (kd.x * cosine + spec.x * share), e.y * (kd.y * cosine + spec.y * share),
+              e.z * (kd.z * cosine + spec.z * share)};
+    return f3_pick(seen, out, (f3){0.0f, 0.0f, 0.0f});
+}
+
+/* The loop of one area kernel, element(s, n, v, p) the colour at each element, over restrict
+ * parameters (see VEC3_PARAMS). params: an sc_scene of one area light (the kernels' NaN for
+ * another is not repeated). */
+#define AREA_LOOP(name, element)                                                                   \
+    static void name##_arrays(const sc_shade_uniforms *restrict s, VEC3_PARAMS(nx, ny, nz),        \
+                              VEC3_PARAMS(vx, vy, vz), VEC3_PARAMS(px, py, pz), VEC3_OUTS,         \
+                              size_t n)                                                            \
+    {                                                                                              \
+        for (size_t i = 0; i < n; i++) {                                                           \
+            f3 nn = {nx[i], ny[i], nz[i]}, vv = {vx[i], vy[i], vz[i]}, pp = {px[i], py[i], pz[i]}; \
+            f3 rgb = element(s, nn, vv, pp);                                                       \
+            ox[i] = rgb.x;                                                                         \
+            oy[i] = rgb.y;                                                                         \
+            oz[i] = rgb.z;                                                                         \
+        }                                                                                          \
+    }                                                                                              \
+    static void loop_##name(const sc_batch_args *a)                                                \
+    {                                                                                              \
+        static _Thread_local sc_shade_uniforms s;                                                  \
+        char why[8];                                                                               \
+        if (sc_uniforms_shade(a->params, &s, why, sizeof why) == 0)                                \
+            name##_arrays(&s, VEC3_IN(a), a->in[3], a->in[4], a->in[5], a->in[6], a->in[7],        \
+                          a->in[8], VEC3_OUT(a), a->n);                                            \
+    }
+#define SPHERE(s, n, v, p) representative(s, 0, n, v, p)
+#define TUBE(s, n, v, p) representative(s, 1, n, v, p)
+#define RECT(s, n, v, p) ltc(s, &sc_area_ring_rect[0][0], 4, n, v, p)
+#define DISK(s, n, v, p) ltc(s, &sc_area_ring_disk[0][0], 64, n, v, p)
+AREA_LOOP(area_sphere, SPHERE)
+AREA_LOOP(area_tube, TUBE)
+AREA_LOOP(area_rect, RECT)
+AREA_LOOP(area_disk, DISK)
 
 static const struct {
     const char *kernel;
@@ -391,6 +621,10 @@ static const struct {
     {"spot_directx", loop_spot_directx},
     {"spot_smoothstep", loop_spot_smoothstep},
     {"brdf", loop_brdf},
+    {"area_sphere", loop_area_sphere},
+    {"area_tube", loop_area_tube},
+    {"area_disk", loop_area_disk},
+    {"area_rect", loop_area_rect},
 };
 
 sc_batch_fn BENCH_LOOPS_LOOKUP(const char *kernel)

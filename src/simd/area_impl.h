@@ -98,31 +98,32 @@ static SC_INLINE v3 closest_centre(sc_light_kind kind, const sc_area_uniforms *a
 
 /* Karis's energy normalisation of GGX: α/α' across (R) times α/α' along the emitter,
  * α' = min(1, α + w/(2d)); α² at d = 0. 1 for the other lobes. */
-static SC_INLINE vf energy_normalisation(sc_lobe lobe, const sc_shade_uniforms *s,
+static SC_INLINE vf energy_normalisation(sc_lobe lobe, const shade_vecs *sv,
                                          const sc_area_uniforms *a, vf d)
 {
     if (lobe != SC_LOBE_GGX)
         return vf_set1(1.0f);
-    vf alpha = vf_set1(s->alpha), inv_2d = area_ratio(vf_set1(0.5f), d);
+    vf alpha = vf_set1(sv->s->alpha), inv_2d = area_ratio(vf_set1(0.5f), d);
     vf across = vf_min(vf_set1(1.0f), vf_fma(vf_set1(a->radius), inv_2d, alpha));
     vf along = vf_min(vf_set1(1.0f), vf_fma(vf_set1(a->half_along), inv_2d, alpha));
-    vf w = area_ratio(vf_mul(alpha, alpha), vf_mul(across, along));
-    return vf_select(vf_lt(vf_set1(0.0f), d), w, vf_mul(alpha, alpha));
+    vf w = area_ratio(sv->a2, vf_mul(across, along));
+    return vf_select(vf_lt(vf_set1(0.0f), d), w, sv->a2);
 }
 
-/* L_e ⊙ (c_diff/π E(n) + c_spec f_s(l_s) N E(l_s) cos̄θ_s), 0 where n·v <= 0. */
+/* L_e ⊙ (c_diff/π E(n) + c_spec f_s(l_s) N E(l_s) cos̄θ_s), 0 where n·v <= 0. The colours
+ * L_e ⊙ c_diff/π and L_e ⊙ c_spec ⊙ the lobe's constant factor are lv's, made once per call
+ * (light_vecs_of), not per vector. */
 static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs *sv,
-                                        sc_light_kind kind, const sc_light_uniforms *lt, v3 n, v3 v,
-                                        vf nv, v3 p)
+                                        sc_light_kind kind, const sc_light_uniforms *lt,
+                                        const light_vecs *lv, v3 n, v3 v, vf nv, v3 p)
 {
-    const sc_shade_uniforms *s = sv->s;
     int nt = tier == FAST8 ? FAST12 : tier;
     const sc_area_uniforms *a = &lt->area;
     vf zero = vf_set1(0.0f);
     v3 c = v3_sub(v3_set1(a->centre), p);
     vf dc = area_length(v3_dot(c, c));
     vf e_diffuse = area_irradiance(kind, a, n, c, dc, p);
-    v3 out = v3_scale(v3_set1(s->diff_pi), e_diffuse);
+    v3 out = v3_scale(lv->diff, e_diffuse);
     if (lobe != SC_LOBE_NONE) {
         v3 r = v3_sub(v3_scale(n, vf_mul(vf_set1(2.0f), nv)), v);
         v3 L = closest_centre(kind, a, r, c, p);
@@ -136,20 +137,13 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
         v3 ls = v3_select(at_r, r, v3_normalize_dd(nt, P, pp));
         vf cos_s = v3_dot(n, ls);
         vm lit = vf_lt(zero, cos_s);
-        vf sp = vf_select(lit,
-                          vf_mul(vf_set1(lobe_factor(lobe, s)),
-                                 own_specular(tier, nt, lobe, sv, v, ls, cos_s, nv)),
-                          zero);
-        vf w = vf_mul(vf_mul(sp, energy_normalisation(lobe, s, a, d)),
+        vf sp = vf_select(lit, own_specular(tier, nt, lobe, sv, v, ls, cos_s, nv), zero);
+        vf w = vf_mul(vf_mul(sp, energy_normalisation(lobe, sv, a, d)),
                       vf_mul(area_irradiance(kind, a, ls, c, dc, p), vf_max(cos_s, zero)));
-        v3 ks = v3_set1(s->spec);
+        v3 ks = lv->spec;
         out = (v3){vf_fma(ks.x, w, out.x), vf_fma(ks.y, w, out.y), vf_fma(ks.z, w, out.z)};
     }
-    vm seen = vf_lt(zero, nv);
-    v3 e = v3_set1(lt->color);
-    return (v3){vf_select(seen, vf_mul(e.x, out.x), zero),
-                vf_select(seen, vf_mul(e.y, out.y), zero),
-                vf_select(seen, vf_mul(e.z, out.z), zero)};
+    return v3_select(vf_lt(zero, nv), out, (v3){zero, zero, zero});
 }
 
 /* ---- LTC (light/ltc.c) ---- */
@@ -329,12 +323,12 @@ static SC_INLINE v3 ltc_term(int tier, const sc_shade_uniforms *s, sc_light_kind
 }
 
 static SC_INLINE v3 area_term(int tier, sc_lobe lobe, const shade_vecs *c, sc_light_kind kind,
-                              const sc_light_uniforms *lt, v3 n, v3 v, vf nv,
+                              const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v, vf nv,
                               const float *const *in, size_t i, v3 acc)
 {
     v3 p = v3_load(in, 6, i);
     v3 l = kind == SC_LIGHT_SPHERE || kind == SC_LIGHT_TUBE
-               ? representative_term(tier, lobe, c, kind, lt, n, v, nv, p)
+               ? representative_term(tier, lobe, c, kind, lt, lv, n, v, nv, p)
                : ltc_term(tier, c->s, kind, lt, n, v, nv, p);
     return v3_add(acc, l);
 }

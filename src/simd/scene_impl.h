@@ -156,7 +156,7 @@ static SC_INLINE v3 v3_select(vm m, v3 a, v3 b)
 
 /* acc + an area light's term (src/simd/area_impl.h, included after this file) */
 static SC_INLINE v3 area_term(int tier, sc_lobe lobe, const shade_vecs *c, sc_light_kind kind,
-                              const sc_light_uniforms *lt, v3 n, v3 v, vf nv,
+                              const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v, vf nv,
                               const float *const *in, size_t i, v3 acc);
 
 /* acc + E cos θ_i ⊙ f(l, v) for one light; lobe is a constant at each call. Unlit lanes drop
@@ -166,7 +166,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
                                const float *const *in, size_t i, v3 acc)
 {
     if (shape.kind >= SC_LIGHT_SPHERE)
-        return area_term(tier, lobe, c, shape.kind, lt, n, v, nv, in, i, acc);
+        return area_term(tier, lobe, c, shape.kind, lt, lv, n, v, nv, in, i, acc);
     int nt = tier == FAST8 ? FAST12 : tier;
     vf falloff, zero = vf_set1(0.0f);
     v3 l = light_dir(tier, nt, shape, lt, lv, n, in, i, &falloff);

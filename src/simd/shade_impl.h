@@ -64,8 +64,8 @@ static SC_INLINE vf tier_rsqrt(int tier, vf x)
 {
     if (tier == ACCURATE)
         return vf_div(vf_set1(1.0f), vf_sqrt(x));
-    if (tier == REFINED)
-        return rsqrt_refined(x);
+    if (tier == REFINED) /* one lane has no estimate instruction: a root and a division */
+        return VW == 1 ? vf_div(vf_set1(1.0f), vf_sqrt(x)) : rsqrt_refined(x);
     return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
 }
 

@@ -109,6 +109,7 @@ PY
 }
 check_json "json pow"       --n 256 --repeat 3 pow
 check_json "json isa tier"  --n 100 --repeat 1 --isa scalar --tier u1,bits12 exp2 log2
+check_json "json area"      --n 128 --repeat 1 --isa scalar,avx2 area_sphere area_rect
 
 # The peers a user would choose instead: the plain loop compiled with -ffast-math by gcc (and by
 # clang where installed), measured beside the tiers.
@@ -125,6 +126,38 @@ fi
 
 expect "csv header" 0 '~kernel,scene,isa,tier,n,ns_per_elem,ns_min,ns_max,speedup_vs_scalar,speedup_vs_libm_loop,max_ulp,mean_ulp,max_rel,max_abs,roofline_ns,bound_ulp,roofline_fraction,pareto' '' -- bench --n 64 --repeat 1 --format csv sqrt
 expect "shade scenes" 0 '~lambert 1d' '' -- bench --n 64 --repeat 1 --isa scalar --tier accurate shade
+
+# The area kernels have the peers of every other kernel (issue 15): the plain loop of the same
+# approximation at -O2 and with -ffast-math, whose error against the double approximation is
+# that of float arithmetic: within 2^-12 of the scale max L_e (c_diff + c_spec) = 3.6.
+if "$SHADECALC" bench --n 512 --repeat 1 --format json area_sphere area_tube area_disk area_rect \
+        >"$e2e_tmp/area.json" 2>"$e2e_tmp/err" &&
+    python3 - "$e2e_tmp/area.json" <<'PY'
+import json, sys
+rows = json.load(open(sys.argv[1]))["rows"]
+for k in ("area_sphere", "area_tube", "area_disk", "area_rect"):
+    peers = [r for r in rows if r["kernel"] == k and r["tier"] == "loop"]
+    assert any(r["isa"] == "libm" for r in peers) and any(r["isa"].startswith("gcc-fast") for r in peers), (k, peers)
+    for r in peers:
+        assert r["max_abs"] <= 3.6 * 2**-12, r
+PY
+then echo "ok   area peers"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL area peers"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
+fi
+
+# The compute bound of shade counts the operations each tier executes (issue 12): every tier,
+# AVX-512 included (16 lanes), has one, and none runs faster than it in cache.
+if "$SHADECALC" bench --n 4096 --repeat 3 --format json shade >"$e2e_tmp/shade.json" 2>"$e2e_tmp/err" &&
+    python3 - "$e2e_tmp/shade.json" <<'PY'
+import json, sys
+rows = [r for r in json.load(open(sys.argv[1]))["rows"] if r["tier"] != "loop" and not r["isa"].startswith("sleef")]
+assert rows
+for r in rows:
+    assert r["roofline_fraction"] is not None and 0 < r["roofline_fraction"] <= 1.0, r
+PY
+then echo "ok   shade roofline"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL shade roofline: a tier faster than its counted compute bound"; cat "$e2e_tmp/err"; echo fail >>"$E2E_COUNTS"
+fi
 
 # The man page's tier table is the binary's own table (mk/man-tiers.sh regenerates it).
 if sh mk/man-tiers.sh "$SHADECALC" >"$e2e_tmp/tiers" 2>"$e2e_tmp/err" &&
