@@ -29,6 +29,12 @@
 #else
 #define SC_INLINE inline
 #endif
+/* The rare paths kept out of the loops they would otherwise crowd (registers, constants). */
+#if defined(__GNUC__)
+#define SC_NOINLINE __attribute__((noinline))
+#else
+#define SC_NOINLINE
+#endif
 
 #define SC_CAT2(a, b) a##_##b
 #define SC_CAT(a, b) SC_CAT2(a, b)
@@ -137,10 +143,8 @@ static inline vf fixup1(vm special, vf x, vf r, float (*f)(float))
     return vf_loadu(br);
 }
 
-static inline vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float))
+static SC_NOINLINE vf fixup2_lanes(vm special, vf x, vf y, vf r, float (*f)(float, float))
 {
-    if (!vm_any(special))
-        return r;
     float bx[VW], by[VW], br[VW];
     vf_storeu(bx, x);
     vf_storeu(by, y);
@@ -149,6 +153,13 @@ static inline vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float))
         if (vm_lane(special, k))
             br[k] = f(bx[k], by[k]);
     return vf_loadu(br);
+}
+
+/* fixup1 for two-argument kernels, whose loops inline the lane: the test inline, the scalar
+ * calls out of line. */
+static SC_INLINE vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float))
+{
+    return vm_any(special) ? fixup2_lanes(special, x, y, r, f) : r;
 }
 
 /* Polynomial loops are unrolled into straight-line FMAs with their constants in registers:
@@ -326,14 +337,6 @@ static SC_INLINE vd vd_horner(vd x, const double *c, int n) /* c[0] + c[1] x + �
     return r;
 }
 
-/* 2^k for integral k in double, |k| <= 1000, through the exponent bits. */
-static inline vd vd_pow2i(vd k)
-{
-    const double shifter = 0x1.8p52; /* k + 1.5·2^52 holds k in its low bits */
-    vl bits = vl_sub(vd_as_vl(vd_add(k, vd_set1(shifter))), vd_as_vl(vd_set1(shifter)));
-    return vl_as_vd(vl_shl52(vl_add(bits, vl_set1(1023))));
-}
-
 /* 2^f on [−1/2, 1/2]: degree 8, relative fit error 1.1e-12 = 2^-39.8 (mpmath chebyfit), so
  * that the one rounding to float is wrong only within 2^-15 ULP of a midpoint; c[0] + c[1] f
  * + … */
@@ -349,12 +352,18 @@ static const double exp2_d8[9] = {1.0,
 
 static inline vd exp2_reduced_d(vd f) { return vd_horner(f, exp2_d8, 9); }
 
-/* 2^x in double: 2^k · 2^(x − k), k = rint(x), |x| clamped to 1000 (pow's exponential) */
-static inline vd exp2_d(vd x)
+/* 2^x in double: 2^k · 2^(x − k), k = rint(x), |x| clamped to 1000 (pow's exponential). k by
+ * a shifter: x + 1.5·2^52 rounds x to an integer, ties to even, and its low bits are k, so that
+ * 2^k is an integer add and a shift. */
+static SC_INLINE vd exp2_d(vd x)
 {
+    const double shifter = 0x1.8p52;
     x = vd_min(vd_max(x, vd_set1(-1000.0)), vd_set1(1000.0));
-    vd k = vd_rint(x);
-    return vd_mul(exp2_reduced_d(vd_sub(x, k)), vd_pow2i(k));
+    vd shifted = vd_add(x, vd_set1(shifter));
+    vd k = vd_sub(shifted, vd_set1(shifter));
+    vl bias = vl_sub(vl_set1(1023), vd_as_vl(vd_set1(shifter)));
+    vd scale = vl_as_vd(vl_shl52(vl_add(vd_as_vl(shifted), bias)));
+    return vd_mul(exp2_reduced_d(vd_sub(x, k)), scale);
 }
 
 /* 2^f rounded once to float (f: float lanes, or the double lanes of exp_reduced_d) times 2^k
@@ -494,10 +503,13 @@ static inline vf inversesqrt_u1(vf x) { return on_doubles(x, rsqrt_d); }
 
 /* 2^(y log2 x) on one half, x = m 2^e (log_split); the special cases of src/math/pow.c
  * (x <= 0, x = 1, infinities, NaN, y = 0) go to the scalar built-in. */
-static inline vd pow_half(vd m, vd e, vd y) { return exp2_d(vd_mul(y, log2_parts_d(m, e, 7))); }
+static SC_INLINE vd pow_half(vd m, vd e, vd y)
+{
+    return exp2_d(vd_mul(y, log2_parts_d(m, e, 7)));
+}
 
 /* x^y for positive normal x, in double lanes, rounded once */
-static inline vf pow_d(vf x, vf y)
+static SC_INLINE vf pow_d(vf x, vf y)
 {
     vf m, e;
     log_split(x, &m, &e);
@@ -505,7 +517,7 @@ static inline vf pow_d(vf x, vf y)
                       pow_half(vd_from_hi(m), vd_from_hi(e), vd_from_hi(y)));
 }
 
-static inline vf pow_u1(vf x, vf y)
+static SC_INLINE vf pow_u1(vf x, vf y)
 {
     vf r = pow_d(x, y);
     vf abs_y = vf_max(y, vf_sub(vf_set1(0.0f), y));

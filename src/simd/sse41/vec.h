@@ -71,10 +71,6 @@ static inline vd vd_fma(vd a, vd b, vd c) { return _mm_add_pd(_mm_mul_pd(a, b), 
 static inline vd vd_sqrt(vd a) { return _mm_sqrt_pd(a); }
 static inline vd vd_min(vd a, vd b) { return _mm_min_pd(a, b); }
 static inline vd vd_max(vd a, vd b) { return _mm_max_pd(a, b); }
-static inline vd vd_rint(vd a)
-{
-    return _mm_round_pd(a, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
-}
 static inline vdm vd_lt(vd a, vd b) { return _mm_cmplt_pd(a, b); }
 static inline vd vd_select(vdm m, vd a, vd b) { return _mm_blendv_pd(b, a, m); }
 static inline vl vd_as_vl(vd x) { return _mm_castpd_si128(x); }
