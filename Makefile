@@ -46,6 +46,11 @@ EXR_LIBS  = $(shell pkg-config --libs-only-l OpenEXR 2>/dev/null | tr ' ' '\n' |
 LDLIBS   += $(EXR_LIBS) -lm -lpthread
 LDALL     = $(SANFLAGS) -pthread $(LDFLAGS)
 
+# The SIMD kernel files inline hundreds of specialised loops: with full debug information (-g)
+# gcc 12 spent 131 s of CPU on src/simd/avx2/kernels.c, with line tables only (-g1) 63 s, about
+# what it takes without -g (61 s); backtraces keep their file and line.
+$(BUILD)/obj/src/simd/%.o: SIMD_DEBUG := -g1
+
 ARCH := $(shell uname -m)
 ifneq ($(filter x86_64 amd64 i686 i386,$(ARCH)),)
 $(BUILD)/obj/src/simd/avx2/%.o: ISAFLAGS := -mavx2 -mfma -mf16c
@@ -144,7 +149,7 @@ $(LIB_OBJS): include/shadecalc/api.h
 
 $(BUILD)/obj/%.o: %.c $(CONFIG_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(ISAFLAGS) $(VISFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(CPPFLAGS) $(ALLCFLAGS) $(SIMD_DEBUG) $(ISAFLAGS) $(VISFLAGS) -MMD -MP -c $< -o $@
 
 $(BUILD)/gen/commands.h: $(CMD_SRCS) mk/gen-commands.sh
 	@mkdir -p $(dir $@)
@@ -185,8 +190,9 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 # a deterministic 1/50 sample (tests/unit/scale.h); the plain stage checks every bound on all
 # 10^6 inputs per kernel, tier and instruction set.
 # Most of check's CPU is compiling: one gcc tree (make test-bins) took 9.8 CPU-minutes, about 2
-# of them for each of the four SIMD kernel files of src/simd/ (under ASan avx2/kernels.c took
-# over 131 s at -O1 as at -O2: a lower OPT for SAN gains nothing); the plain unit tests 2.4
+# of them for each of the four SIMD kernel files of src/simd/ before they were built with -g1
+# (about half that since; under ASan avx2/kernels.c took over 131 s at -O1 as at -O2: a lower
+# OPT for SAN gains nothing); the plain unit tests 2.4
 # (test_batch_light 45 s, test_batch 36 s: all 10^6 inputs), the plain e2e 0.8 (767 checks).
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 check: deps
