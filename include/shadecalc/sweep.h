@@ -128,10 +128,11 @@ typedef struct {
     int threads; /* >= 1 */
     /* optional, used instead of eval (which may then be NULL): `count` rows at once, their variables in vars (row after
      * row, grid->n each) and their results in results (n_results each); returns count, or the
-     * index in the block of the first row that failed, with a message in err (the rows before
-     * it are written) */
+     * index in the block of the first row that failed, with a message in err and that row's
+     * code as eval returns it (-1 or SC_SWEEP_ROW_INVALID) in *failure (the rows before it are
+     * written) */
     int (*eval_block)(void *user, int worker, int count, const double *vars, double *results,
-                      char *err, size_t errsize);
+                      int *failure, char *err, size_t errsize);
 } sc_sweep_job;
 
 /* What eval or consume returns for a row whose input is invalid (not a run-time failure). */

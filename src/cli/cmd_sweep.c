@@ -397,10 +397,10 @@ static int job_eval(void *user, int worker, const double *vars, double *results,
 }
 
 static int job_eval_block(void *user, int worker, int count, const double *vars, double *results,
-                          char *err, size_t errsize)
+                          int *failure, char *err, size_t errsize)
 {
     const job_context *j = user;
-    return j->plan->eval_block(j->plan->user, worker, count, vars, results, err, errsize);
+    return j->plan->eval_block(j->plan->user, worker, count, vars, results, failure, err, errsize);
 }
 
 static int job_consume(void *user, uint64_t row, const double *vars, const double *results,

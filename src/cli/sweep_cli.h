@@ -20,7 +20,7 @@ typedef struct {
                 size_t errsize);
     /* instead of eval (NULL then): many rows at once (sc_sweep_job.eval_block) */
     int (*eval_block)(void *user, int worker, int count, const double *vars, double *results,
-                      char *err, size_t errsize);
+                      int *failure, char *err, size_t errsize);
     void *user;
     void (*report)(void *user); /* after the run: warnings (may be NULL) */
     void (*destroy)(void *user);

@@ -65,8 +65,9 @@ static long eval_chunk(const expr_plan *e, int worker, int count, const double *
 }
 
 static int eval_rows(void *user, int worker, int count, const double *vars, double *results,
-                     char *err, size_t errsize)
+                     int *failure, char *err, size_t errsize)
 {
+    *failure = -1; /* a failure of the program's evaluation is a run-time one */
     const expr_plan *e = user;
     for (int first = 0; first < count; first += CHUNK) {
         int n = count - first < CHUNK ? count - first : CHUNK;

@@ -209,8 +209,7 @@ typedef struct {
 static int flush_run(const shade_plan *s, const brdf_run *run, const sc_brdf_point *pts,
                      sc_brdf_terms *terms, double *results, char *err, size_t errsize)
 {
-    int done = sc_brdf_eval_many(s->prec, &run->brdf, run->n, pts + run->first,
-                                 terms + run->first);
+    int done = sc_brdf_eval_many(s->prec, &run->brdf, run->n, pts + run->first, terms + run->first);
     for (int i = run->first; i < run->first + done; i++)
         memcpy(results + 3 * (size_t)i, terms[i].f, sizeof terms[i].f);
     if (done < run->n)
@@ -220,7 +219,7 @@ static int flush_run(const shade_plan *s, const brdf_run *run, const sc_brdf_poi
 
 static int eval_brdf_rows_in(const shade_plan *s, worker_state *w, int count, const double *vars,
                              double *results, sc_brdf_point *pts, sc_brdf_terms *terms,
-                             char *err, size_t errsize)
+                             int *failure, char *err, size_t errsize)
 {
     brdf_run run = {w->model.brdf, 0, 0};
     for (int i = 0; i < count; i++) {
@@ -229,8 +228,10 @@ static int eval_brdf_rows_in(const shade_plan *s, worker_state *w, int count, co
             char why[256];
             snprintf(why, sizeof why, "%s", err); /* the rows before it first */
             int done = flush_run(s, &run, pts, terms, results, err, errsize);
-            if (done == i)
+            if (done == i) {
                 snprintf(err, errsize, "%s", why);
+                *failure = SC_SWEEP_ROW_INVALID;
+            }
             return done;
         }
         if (memcmp(&run.brdf, &w->model.brdf, sizeof run.brdf) != 0) {
@@ -251,15 +252,16 @@ static int eval_brdf_rows_in(const shade_plan *s, worker_state *w, int count, co
 /* eval_block of a BRDF alone: f(l, v) of many rows through sc_brdf_eval_many (a BRDF file's
  * shader in blocks), the same values as eval_row gives row by row. */
 static int eval_brdf_rows(void *user, int worker, int count, const double *vars, double *results,
-                          char *err, size_t errsize)
+                          int *failure, char *err, size_t errsize)
 {
+    *failure = -1; /* a shader's failure; an invalid spec sets SC_SWEEP_ROW_INVALID */
     const shade_plan *s = user;
     sc_brdf_point *pts = malloc((size_t)count * sizeof *pts);
     sc_brdf_terms *terms = malloc((size_t)count * sizeof *terms);
     int done = 0;
     if (pts && terms)
-        done = eval_brdf_rows_in(s, &s->workers[worker], count, vars, results, pts, terms, err,
-                                 errsize);
+        done = eval_brdf_rows_in(s, &s->workers[worker], count, vars, results, pts, terms, failure,
+                                 err, errsize);
     else
         snprintf(err, errsize, "out of memory");
     free(pts);

@@ -86,7 +86,10 @@ static int eval_rows_at_once(const runner *r, int worker, uint64_t first, int co
     for (int i = 0; i < count; i++)
         sc_sweep_grid_point(job->grid, first + (uint64_t)i,
                             s->vars + (size_t)i * (size_t)r->n_vars);
-    return job->eval_block(job->user, worker, count, s->vars, s->results, msg, size);
+    int failure = SC_SWEEP_FAILED;
+    int done = job->eval_block(job->user, worker, count, s->vars, s->results, &failure, msg, size);
+    s->failed = row_failure(failure);
+    return done;
 }
 
 /* Evaluates and formats one block into s (no lock held). */
@@ -96,7 +99,6 @@ static void fill_block(const runner *r, int worker, uint64_t block, slot *s)
     int count = block_row_count(r, block);
     uint64_t first = block * (uint64_t)r->block_rows;
     char msg[ERR_MAX - 32] = "";
-    s->failed = SC_SWEEP_FAILED; /* eval_block's failures are run-time ones */
     s->rows = job->eval_block ? eval_rows_at_once(r, worker, first, count, s, msg, sizeof msg)
                               : eval_rows(r, worker, first, count, s, msg, sizeof msg);
     s->text_len = 0;

@@ -68,7 +68,7 @@ expect "loop bound shade" 1 '' "error: shade: $D/loop.brdf:7:5: more than 100000
 expect "loop bound check" 1 '' "error: check: $D/loop.brdf:7:5: more than 100000 loop iterations in one evaluation" -- check --brdf "file=$D/loop.brdf" --theta 0
 expect "loop bound sweep" 1 '*' "error: sweep: row 1: $D/loop.brdf:7:5: more than 100000 loop iterations in one evaluation" -- sweep --brdf "file=$D/loop.brdf" --var theta_o=0:80:3
 expect "loop bound render" 1 '' "error: render: $D/loop.brdf:7:5: more than 100000 loop iterations in one evaluation" -- render --brdf "file=$D/loop.brdf" --size 16x16 -o "$e2e_tmp/loop.exr"
-expect "loop bound at row 8" 2 '*' "error: sweep: row 8: $D/loop_grazing.brdf:8:5: more than 100000 loop iterations in one evaluation" -- sweep --threads 1 --brdf "file=$D/loop_grazing.brdf" --var theta_o=0:80:9
+expect "loop bound at row 8" 1 '*' "error: sweep: row 8: $D/loop_grazing.brdf:8:5: more than 100000 loop iterations in one evaluation" -- sweep --threads 1 --brdf "file=$D/loop_grazing.brdf" --var theta_o=0:80:9
 verdict "no image of a failed shader" test ! -e "$e2e_tmp/loop.exr"
 
 # sweep: $var in the parameters; the file is compiled once

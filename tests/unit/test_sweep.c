@@ -270,10 +270,10 @@ static int eval_poly(void *user, int worker, const double *vars, double *results
 
 /* The same through eval_block: count rows at once, the index of the first that fails. */
 static int eval_poly_block(void *user, int worker, int count, const double *vars, double *results,
-                           char *e, size_t size)
+                           int *failure, char *e, size_t size)
 {
     for (int i = 0; i < count; i++)
-        if (eval_poly(user, worker, vars + 2 * i, results + i, e, size) < 0)
+        if ((*failure = eval_poly(user, worker, vars + 2 * i, results + i, e, size)) < 0)
             return i;
     return count;
 }
