@@ -397,8 +397,8 @@ static void point_columns(const sc_brdf *b, int n, const sc_brdf_point *pts, dou
 }
 
 /* Up to MANY_CHUNK points in one block execution; the points before the first that failed. */
-static int eval_chunk(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
-                      double (*f)[3], double *buf)
+static int eval_chunk(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts, double (*f)[3],
+                      double *buf)
 {
     const sc_brdf_file *file = b->file;
     const double *in[MANY_COLUMNS];

@@ -111,7 +111,8 @@ static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], do
     for (int i = 0; i < nt; i++) { /* a ring of constant θ_o at a time */
         double st = sin(th[i]), ct = cos(th[i]);
         for (int j = 0; j < np; j++) {
-            ring[j] = (sc_brdf_point){f, {l[0], l[1], l[2]}, {st * cos(ph[j]), st * sin(ph[j]), ct}};
+            ring[j] = (sc_brdf_point){
+                f, {l[0], l[1], l[2]}, {st * cos(ph[j]), st * sin(ph[j]), ct}};
         }
         sc_brdf_eval_many(SC_DOUBLE, b, np, ring, terms);
         for (int j = 0; j < np; j++) {

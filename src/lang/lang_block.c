@@ -407,8 +407,8 @@ static void column_double(const sc_builtin_scalar *f, double *d, const double *c
 static int has_column_form(sc_prec p, const sc_builtin_scalar *f)
 {
     return (p == SC_HIGHP || p == SC_DOUBLE) &&
-           (f->f3 == sc_p_mix || f->f3 == sc_p_clamp || f->f2 == sc_p_min ||
-            f->f2 == sc_p_max || f->f1 == sc_p_sqrt);
+           (f->f3 == sc_p_mix || f->f3 == sc_p_clamp || f->f2 == sc_p_min || f->f2 == sc_p_max ||
+            f->f1 == sc_p_sqrt);
 }
 
 /* Whether the columns c[0..n) hold the same bits in every lane of s. */

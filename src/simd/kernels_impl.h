@@ -503,10 +503,7 @@ static inline vf inversesqrt_u1(vf x) { return on_doubles(x, rsqrt_d); }
 
 /* 2^(y log2 x) on one half, x = m 2^e (log_split); the special cases of src/math/pow.c
  * (x <= 0, x = 1, infinities, NaN, y = 0) go to the scalar built-in. */
-static SC_INLINE vd pow_half(vd m, vd e, vd y)
-{
-    return exp2_d(vd_mul(y, log2_parts_d(m, e, 7)));
-}
+static SC_INLINE vd pow_half(vd m, vd e, vd y) { return exp2_d(vd_mul(y, log2_parts_d(m, e, 7))); }
 
 /* x^y for positive normal x, in double lanes, rounded once */
 static SC_INLINE vf pow_d(vf x, vf y)

@@ -305,8 +305,11 @@ static void many_points_agree_with_one_at_a_time(void **state)
     sc_brdf b;
     sc_brdf_file_defaults(f, &b);
     char err[256];
-    static const char *const set[][2] = {{"metal", "0.3"}, {"aniso", "0.6"}, {"sheen", "0.7"},
-                                         {"coat", "0.5"},  {"coat_gloss", "0.4"}};
+    static const char *const set[][2] = {{"metal", "0.3"},
+                                         {"aniso", "0.6"},
+                                         {"sheen", "0.7"},
+                                         {"coat", "0.5"},
+                                         {"coat_gloss", "0.4"}};
     for (size_t i = 0; i < sizeof set / sizeof set[0]; i++)
         assert_int_equal(sc_brdf_file_set(&b, set[i][0], set[i][1], err, sizeof err), 0);
     sc_frame frames[2];
