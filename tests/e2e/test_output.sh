@@ -191,11 +191,19 @@ interrupted() { # NAME SIGNAL STATUS [RUNNER...]: a long sweep -o killed once it
         [ "$(cat "$d/long.csv")" = old ]
     verdict "$name" $((! $?)) "temporary seen: $created, status $status, left: $(ls -A "$d")"
 }
-interrupted "SIGTERM during sweep -o: temporary removed, old file kept, status 143" TERM 143
-interrupted "SIGHUP during sweep -o: temporary removed, status 129" HUP 129
-if env --default-signal=INT true 2>/dev/null; then # a background job starts with SIGINT ignored
+# Each run restores the signal's default action first where env can (a background job starts
+# with SIGINT ignored, a run under nohup with SIGHUP ignored, and an ignored signal rightly
+# stays ignored in shadecalc).
+if env --default-signal=INT true 2>/dev/null; then
+    interrupted "SIGTERM during sweep -o: temporary removed, old file kept, status 143" TERM 143 \
+        env --default-signal=TERM
+    interrupted "SIGHUP during sweep -o: temporary removed, status 129" HUP 129 \
+        env --default-signal=HUP
     interrupted "SIGINT during sweep -o: temporary removed, status 130" INT 130 \
         env --default-signal=INT
+else
+    interrupted "SIGTERM during sweep -o: temporary removed, old file kept, status 143" TERM 143
+    interrupted "SIGHUP during sweep -o: temporary removed, status 129" HUP 129
 fi
 
 (
