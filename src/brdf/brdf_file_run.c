@@ -396,7 +396,8 @@ static void point_columns(const sc_brdf *b, int n, const sc_brdf_point *pts, dou
         out[k] = buf + (size_t)(c + k) * (size_t)n;
 }
 
-/* Up to MANY_CHUNK points in one block execution; the points before the first that failed. */
+/* Up to MANY_CHUNK points in one block execution; the points before the first that failed
+ * (their f written; the caller has set every f to NaN). */
 static int eval_chunk(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts, double (*f)[3],
                       double *buf)
 {
@@ -407,9 +408,9 @@ static int eval_chunk(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *p
     sc_lang_block job = {p, n, in, sc_program_values(file->prog) - 1, out, NULL, NULL};
     sc_lang_error e;
     long ran = sc_program_run_block(file->prog, &job, &e);
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < ran; i++)
         for (int k = 0; k < 3; k++)
-            f[i][k] = i < ran ? out[k][i] : NAN;
+            f[i][k] = out[k][i];
     if (ran < n)
         record_error(file, &e);
     return (int)ran;
