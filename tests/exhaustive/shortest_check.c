@@ -2,6 +2,7 @@
 #include "shortest_check.h"
 #include "shortest_exact.h"
 
+#include <fenv.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -18,15 +19,43 @@ typedef struct {
 
 static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
 
-/* Whether the text s reads back to x in p (lowp: without relying on its saturation). */
+/* The decimal text s correctly rounded to p, once: strtod for binary64, glibc's strtof for
+ * binary32. For binary16 and lowp, whose values and midpoints are all binary64 values: the
+ * decimal lies in [lo, hi], its binary64 neighbours (strtod rounding downward and upward, which
+ * glibc honours). Either it is lo itself, or it lies strictly between lo and hi, where no
+ * midpoint of p is; then when lo and hi round to different values of p, the end nearer zero or
+ * the other is their midpoint, and the decimal lies on the other side of it. (The end nearer
+ * zero: its rounding is finite whenever the two differ, so the midpoint test is exact.) */
+static double correctly_rounded(const char *s, sc_prec p)
+{
+    if (p == SC_DOUBLE)
+        return strtod(s, NULL);
+    if (p == SC_HIGHP)
+        return strtof(s, NULL);
+    int mode = fegetround();
+    fesetround(FE_DOWNWARD);
+    double lo = strtod(s, NULL);
+    fesetround(FE_UPWARD);
+    double hi = strtod(s, NULL);
+    fesetround(mode);
+    double near = fabs(lo) < fabs(hi) ? lo : hi, far = near == lo ? hi : lo;
+    double n = sc_round(p, near), f = sc_round(p, far);
+    return n == f || near != n / 2 + f / 2 ? n : f;
+}
+
+/* Whether the text s reads back to x in p: its single correct rounding to p is x (lowp: without
+ * relying on its saturation, the decimal at most SC_LOWP_MAX + 2^-9). */
 int shortest_reads_back(const char *s, double x, sc_prec p)
 {
-    double back = strtod(s, NULL);
-    if (!same_bits(sc_round(p, back), x))
+    if (!same_bits(correctly_rounded(s, p), x))
         return 0;
-    if (p == SC_HIGHP && !same_bits((double)strtof(s, NULL), x))
-        return 0;
-    return p != SC_LOWP || fabs(back) <= SC_LOWP_MAX + 0x1p-9;
+    if (p != SC_LOWP)
+        return 1;
+    int mode = fegetround();
+    fesetround(x < 0 ? FE_DOWNWARD : FE_UPWARD);
+    double outward = strtod(s, NULL);
+    fesetround(mode);
+    return fabs(outward) <= SC_LOWP_MAX + 0x1p-9;
 }
 
 static int decimal_reads_back(decimal d, double x, sc_prec p)

@@ -2,7 +2,9 @@
  * the algorithm: glibc's correctly rounded printf("%.*e") and strtod/strtof decide.
  *
  * A decimal of L significant digits passes for x in precision p when
- *   - it reads back: sc_round(p, strtod(s)) is x, bit for bit (for highp strtof(s) too);
+ *   - it reads back: s rounded once, correctly, to p is x, bit for bit (the way shadecalc reads
+ *     a literal: strtod for double, strtof for highp, for mediump and lowp the decimal's two
+ *     binary64 neighbours from strtod rounding down and up, see shortest_reads_back);
  *   - no decimal of L - 1 digits reads back. Any shorter decimal can be written with L - 1
  *     digits, and the only candidates are the two (L - 1)-digit decimals around x: %.{L-2}e
  *     gives one, its neighbours the other (below a power of ten the grid is ten times finer);
@@ -27,7 +29,8 @@ int shortest_check(double x, sc_prec p, char *why, size_t why_size);
 /* The same for the text s instead of sc_format_shortest's. */
 int shortest_check_text(double x, sc_prec p, const char *s, char *why, size_t why_size);
 
-/* Whether s reads back to x in p: sc_round(p, strtod(s)) is x (for highp strtof(s) too). */
+/* Whether s reads back to x in p: s correctly rounded to p (once, not through a binary64) is x;
+ * for lowp without relying on its saturation (s at most SC_LOWP_MAX + 2^-9 in magnitude). */
 int shortest_reads_back(const char *s, double x, sc_prec p);
 
 /* The text of v as %.{n}Lg writes it, except that an integer below 10^6 is written out (%.0Lf)

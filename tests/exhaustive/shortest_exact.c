@@ -153,8 +153,7 @@ static void set_bound(interval *r, int i, uint64_t v, int shift)
     r->approx[i] = (double)v * (double)(UINT64_C(1) << shift) * r->unit; /* powers of 2: exact */
 }
 
-/* In units of 2^(e-54), I is (2m ± 1)·2^53 around m·2^54 ((4m - 1)·2^52 below a power of two),
- * for an odd m moved inwards by half a double's unit at the bound: 2^(bit_length(2m ∓ 1) - 1). */
+/* In units of 2^(e-54), I is (2m ± 1)·2^53 around m·2^54 ((4m - 1)·2^52 below a power of two). */
 static void set_up(interval *r, binary32 b, int g)
 {
     static pthread_once_t once = PTHREAD_ONCE_INIT;
@@ -167,20 +166,11 @@ static void set_up(interval *r, binary32 b, int g)
     r->ten = g >= TEN_MIN && g <= TEN_MAX ? ten_to_the[g - TEN_MIN] : 0;
     uint64_t m = b.m;
     set_bound(r, X, m, 54);
-    if (m == UINT64_C(1) << 23 && b.e > -149) {
+    if (m == UINT64_C(1) << 23 && b.e > -149)
         set_bound(r, LOW, 4 * m - 1, 52);
-    } else if (r->closed) {
+    else
         set_bound(r, LOW, 2 * m - 1, 53);
-    } else { /* (2m - 1)·2^53 + 2^(h - 1) = ((2m - 1)·2^(54 - h) + 1)·2^(h - 1) */
-        int h = bit_length(2 * m - 1);
-        set_bound(r, LOW, ((2 * m - 1) << (54 - h)) + 1, h - 1);
-    }
-    if (r->closed) {
-        set_bound(r, HIGH, 2 * m + 1, 53);
-    } else {
-        int h = bit_length(2 * m + 1);
-        set_bound(r, HIGH, ((2 * m + 1) << (54 - h)) - 1, h - 1);
-    }
+    set_bound(r, HIGH, 2 * m + 1, 53);
 }
 
 static void set_up_exact(interval *r)

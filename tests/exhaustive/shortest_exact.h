@@ -3,14 +3,10 @@
  * checks every binary32 with it, and with shortest_check.h's checker too on a sample).
  *
  * x = m·2^e (m < 2^24) reads back from the decimals of an interval I around x, as
- * shortest_reads_back decides (strtof(s) is x and (float)strtod(s) is x):
- *   - strtof: the bounds are the midpoints (2m ± 1)·2^(e-1) to x's neighbours, the lower one
- *     (4m - 1)·2^(e-2) at a power of two above the smallest normal; included for an even m
- *     (ties to even), excluded for an odd m;
- *   - strtod then float: a decimal within half a double's unit of a midpoint becomes that
- *     midpoint (a double: 25 bits), which then rounds to the even neighbour. For an even m this
- *     only widens I; for an odd m it narrows I to (lower + h_lower, upper - h_upper), h half the
- *     double unit at the midpoint (a tie on h goes to the midpoint, whose last bit is even).
+ * shortest_reads_back decides (strtof(s) is x: one correct rounding to binary32, as shadecalc
+ * reads a highp literal): the bounds are the midpoints (2m ± 1)·2^(e-1) to x's neighbours, the
+ * lower one (4m - 1)·2^(e-2) at a power of two above the smallest normal; included for an even
+ * m (ties to even), excluded for an odd m.
  * A decimal c·10^g is compared with a bound b·2^t exactly: in double when they differ by more
  * than 2^-40 of b (both are within 2^-49 there), otherwise as c·5^g·2^g against b·2^t with the
  * common powers of 2 and 5 cancelled, in 256-bit integers. Then, with n the printed digits and

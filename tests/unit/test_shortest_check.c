@@ -2,7 +2,10 @@
  * tests/exhaustive/shortest_exact.h (integers) and the one of shortest_check.h (glibc's
  * conversions). On printed texts both must pass, on texts one step off (a digit more or less,
  * the last digit ±1, another layout) both must fail, and on decimals of up to 19 digits next to
- * the bounds of the read-back intervals both must say the same. */
+ * the bounds of the read-back intervals both must say the same. Reading back is one correct
+ * rounding, as shadecalc reads a literal, never a rounding to binary64 first: checked for
+ * binary32 and, in shortest_check.h's reader of binary16 and lowp, on decimals beside every
+ * midpoint of those formats. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -17,6 +20,7 @@
 
 #include "tests/exhaustive/shortest_check.h"
 #include "tests/exhaustive/shortest_exact.h"
+#include "tests/unit/midpoint_text.h"
 
 enum { TEXT = 64 };
 
@@ -170,13 +174,14 @@ static void bounds_of(float x, long double bound[2])
 }
 
 /* Decimals of 17 to 19 digits next to each bound of x's interval, some within half a double's
- * unit of it (where strtod rounds to the bound itself), against both readers. Counts those on
- * which strtof and the whole rule disagree, for the test below to see they were reached. */
+ * unit of it (where strtod rounds to the bound itself), against both readers. Counts those that
+ * a reading through binary64 would round twice to another value than strtof, for the test
+ * below to see they were reached. */
 static int readers_agree_near_the_bounds(float x)
 {
     long double bound[2];
     bounds_of(x, bound);
-    int narrowed = 0;
+    int twice = 0;
     for (int side = 0; side < 2; side++)
         for (int digits = 17; digits <= 19; digits++) {
             char text[TEXT];
@@ -192,27 +197,27 @@ static int readers_agree_near_the_bounds(float x)
                 int exact = shortest_exact_reads_back(x, text);
                 if (exact != libc)
                     fail_msg("%a: %s reads back: exact %d, libc %d", (double)x, text, exact, libc);
-                narrowed += strtof(text, NULL) == x && !libc;
+                twice += (float)strtod(text, NULL) != strtof(text, NULL);
             }
         }
-    return narrowed;
+    return twice;
 }
 
 static void both_readers_agree_at_the_interval_bounds(void **state)
 {
     (void)state;
     uint64_t seed = 0x13198a2e03707344u;
-    int narrowed = 0;
+    int twice = 0;
     for (int i = 0; i < 20000; i++) {
         float x = fabsf(float_of((uint32_t)xorshift(&seed)));
         if (x != 0.0f && isfinite(x))
-            narrowed += readers_agree_near_the_bounds(x);
+            twice += readers_agree_near_the_bounds(x);
     }
     for (int e = -149; e <= 127; e++)
-        narrowed += readers_agree_near_the_bounds(ldexpf(1.0f, e));
-    narrowed += readers_agree_near_the_bounds(FLT_MAX) + readers_agree_near_the_bounds(FLT_MIN) +
-                readers_agree_near_the_bounds(FLT_TRUE_MIN);
-    assert_true(narrowed > 0);
+        twice += readers_agree_near_the_bounds(ldexpf(1.0f, e));
+    twice += readers_agree_near_the_bounds(FLT_MAX) + readers_agree_near_the_bounds(FLT_MIN) +
+             readers_agree_near_the_bounds(FLT_TRUE_MIN);
+    assert_true(twice > 0);
 }
 
 /* Texts that are no decimal, or one the exact reader cannot hold. */
@@ -244,12 +249,68 @@ static void the_exact_checker_rejects_what_is_no_decimal(void **state)
     assert_int_equal(shortest_exact_reads_back(1.0f, "1e-300"), 0);
 }
 
+/* 0x1.5c87fap-84 is the binary32 nearest 7.038531e-26; binary64 puts that decimal on the
+ * midpoint 0x1.5c87fa8p-84, which ties to the even 0x1.5c87fcp-84. Both checkers read it once,
+ * as strtof does: the 7 digits pass, and the 8 digits a reader through binary64 would need
+ * are one too many. */
+static void the_checkers_round_a_literal_once(void **state)
+{
+    (void)state;
+    float x = strtof("7.038531e-26", NULL);
+    assert_true(strtod("7.038531e-26", NULL) == ((double)x + nextafterf(x, INFINITY)) / 2);
+    both_checkers(x, "7.038531e-26", 1);
+    both_checkers(-x, "-7.038531e-26", 1);
+    both_checkers(x, "7.0385313e-26", 0);
+    assert_int_equal(shortest_exact_reads_back(x, "7.038531e-26"), 1);
+}
+
+/* Decimals beside a midpoint v of p, which strtod reads as v: the one toward zero reads back to
+ * v's neighbour toward zero, the other to the neighbour away from zero (never to both). */
+static void reads_beside(sc_prec p, double toward, double away)
+{
+    double v = toward / 2 + away / 2;
+    char text[SC_BESIDE_TEXT];
+    for (int side = 0; side < 2; side++) {
+        sc_text_beside(text, v, side);
+        double want = side ? away : toward, other = side ? toward : away;
+        assert_true(strtod(text, NULL) == v);
+        if (!shortest_reads_back(text, want, p) || shortest_reads_back(text, other, p))
+            fail_msg("%s: %.40s... does not read back as %a alone", sc_prec_name(p), text, want);
+    }
+}
+
+/* Every midpoint of binary16 (subnormals, normals, the one below the overflow threshold 65520,
+ * which rounds down to 65504 from below and up to infinity from above), and of lowp (up to its
+ * saturation, where the reader must not count on it: the decimal above 511.5/256 fails). */
+static void the_half_and_lowp_reader_rounds_once(void **state)
+{
+    (void)state;
+    for (unsigned h = 0; h < 0x7bff; h++)
+        for (int sign = -1; sign <= 1; sign += 2)
+            reads_beside(SC_MEDIUMP, sign * sc_half_to_double((uint16_t)h),
+                         sign * sc_half_to_double((uint16_t)(h + 1)));
+    char text[SC_BESIDE_TEXT];
+    sc_text_beside(text, 65520.0, 0);
+    assert_true(shortest_reads_back(text, 65504.0, SC_MEDIUMP));
+    sc_text_beside(text, 65520.0, 1);
+    assert_false(shortest_reads_back(text, 65504.0, SC_MEDIUMP));
+    for (int k = 0; k < 511; k++)
+        for (int sign = -1; sign <= 1; sign += 2)
+            reads_beside(SC_LOWP, sign * (k / 256.0), sign * ((k + 1) / 256.0));
+    sc_text_beside(text, 511.5 / 256, 0);
+    assert_true(shortest_reads_back(text, SC_LOWP_MAX, SC_LOWP));
+    sc_text_beside(text, 511.5 / 256, 1);
+    assert_false(shortest_reads_back(text, SC_LOWP_MAX, SC_LOWP));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(printed_texts_pass_and_mutated_ones_fail),
         cmocka_unit_test(both_readers_agree_at_the_interval_bounds),
         cmocka_unit_test(the_exact_checker_rejects_what_is_no_decimal),
+        cmocka_unit_test(the_checkers_round_a_literal_once),
+        cmocka_unit_test(the_half_and_lowp_reader_rounds_once),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
