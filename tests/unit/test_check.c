@@ -226,7 +226,7 @@ static double adaptive(integrand f, const void *ctx, double a, double b, double 
 static double graded(integrand f, const void *ctx, double peak, double end, double tol)
 {
     double sum = 0.0, far = end;
-    for (int k = 1; k <= 30; k++) {
+    for (int k = 1; k <= 16; k++) {
         double near = peak + (end - peak) * ldexp(1.0, -k);
         sum += adaptive(f, ctx, fmin(near, far), fmax(near, far), tol, 40);
         far = near;
@@ -322,8 +322,8 @@ static double ref_ring(double theta, const void *ctx)
 {
     ref_ctx r = *(const ref_ctx *)ctx;
     r.theta = theta;
-    return 2.0 * (adaptive(ref_azimuth, &r, 0.0, pi_ / 2.0, 1e-15, 40) +
-                  graded(ref_azimuth, &r, pi_, pi_ / 2.0, 1e-15));
+    return 2.0 * (adaptive(ref_azimuth, &r, 0.0, pi_ / 2.0, 1e-14, 40) +
+                  graded(ref_azimuth, &r, pi_, pi_ / 2.0, 1e-14));
 }
 
 /* The directional albedo of the model at θ_i (degrees), split at the mirror direction θ_o = θ_i
@@ -332,7 +332,7 @@ static double albedo_ref(ref_model model, double param, double alpha, double the
 {
     double ti = theta_deg * pi_ / 180.0;
     ref_ctx r = {model, param, alpha, {sin(ti), 0.0, cos(ti)}, 0.0};
-    return graded(ref_ring, &r, ti, 0.0, 1e-14) + graded(ref_ring, &r, ti, pi_ / 2.0, 1e-14);
+    return graded(ref_ring, &r, ti, 0.0, 1e-13) + graded(ref_ring, &r, ti, pi_ / 2.0, 1e-13);
 }
 
 static const double incidences[] = {0, 30, 60, 85, 89.9};
