@@ -9,11 +9,12 @@
  * toward the mirror direction (θ_i, π): breakpoints θ_i ± π·2^-k and π ± π·2^-k for k = 1..K,
  * where K >= 12 makes the narrowest panel at most an eighth of the specular lobe's width
  * (√(2/m) for Phong, 2√(2/m) for Blinn-Phong, 2α for Ward and Cook–Torrance); breakpoints also
- * at φ = π/2, 3π/2 (the kinks of Oren–Nayar's max terms) and at cos θ_o = 10⁻⁶, below which the
- * models' divisions by cos θ_o use 10⁻⁶ (brdf.h): the integrand is the function `shade`
- * evaluates, kinks included. The estimate is the quadrature at `order` nodes per panel; the
- * error estimate is its difference from the same at half the order. l lies in the t–n plane
- * (φ_i = 0). Evaluated in double.
+ * at φ = π/2, 3π/2 (the kinks of Oren–Nayar's max terms). The integrand is the model as written
+ * (docs/formulas.md §6): the floor 10⁻⁶ of shade's divisions by cos θ_o (brdf.h) is left out,
+ * since it would cut a band 10⁻⁶ rad wide off the horizon (6.3·10⁻⁸ of Ward–Dür's albedo at
+ * θ_i = 60°, α = 0.2). The estimate is the quadrature at `order` nodes per panel; the error
+ * estimate is its difference from the same at half the order, plus a bound of the rounding of
+ * the sums. l lies in the t–n plane (φ_i = 0). Evaluated in double.
  *
  * A lobe narrower than 10⁻⁶ rad (Phong m > 2·10¹², Blinn-Phong m > 8·10¹²) is not resolved:
  * cos θ near 1 is known to 2⁻⁵³, so cos^m θ evaluated in double is a staircase with steps
@@ -29,7 +30,7 @@ SC_BEGIN_DECLS
 
 typedef struct {
     double albedo[3]; /* per colour channel */
-    double error[3];  /* |a − a at half resolution| */
+    double error[3];  /* |a − a at half resolution| + rounding */
 } sc_albedo_result;
 
 /* theta_i in degrees; order = Gauss–Legendre nodes per panel (2..32; 0 = default 16).

@@ -68,7 +68,10 @@ double sc_alpha_floor(sc_prec p, double alpha)
     return a > 0.0 ? a : sc_prec_ulp(p, 0.0); /* lowp: 1e-4 rounds to 0, its step is 2^-8 */
 }
 
-double sc_cos_floor(double x) { return x > SC_COS_FLOOR ? x : SC_COS_FLOOR; }
+double sc_cos_floor(const brdf_geometry *g, double x)
+{
+    return x > g->cos_floor ? x : g->cos_floor;
+}
 
 /* ---- frames ---- */
 
@@ -148,12 +151,14 @@ static int geometry(sc_prec p, const sc_frame *frame, const double l[3], const d
     return g->cos_i > 0.0 && g->cos_o > 0.0;
 }
 
-void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const double l[3],
-                  const double v[3], sc_brdf_terms *out)
+/* sc_brdf_eval with the divisions by cos θ_i, cos θ_o taking at least cos_floor. */
+static void evaluate(sc_prec p, const sc_brdf *b, const sc_frame *frame, const double l[3],
+                     const double v[3], double cos_floor, sc_brdf_terms *out)
 {
     brdf_geometry g;
     if (!geometry(p, frame, l, v, &g, out))
         return; /* below the horizon: f = 0 */
+    g.cos_floor = cos_floor;
     if (b->kind == SC_BRDF_FILE) {
         sc_brdf_file_eval(p, b, frame, l, v, out->f);
         return;
@@ -167,19 +172,25 @@ void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const doub
         out->f[c] = sc_p_add(p, out->diffuse[c], out->specular[c]);
 }
 
+void sc_brdf_eval(sc_prec p, const sc_brdf *b, const sc_frame *frame, const double l[3],
+                  const double v[3], sc_brdf_terms *out)
+{
+    evaluate(p, b, frame, l, v, SC_COS_FLOOR, out);
+}
+
 /* Whether b is a BRDF file whose shader has failed. */
 static int file_failed(const sc_brdf *b)
 {
     return b->kind == SC_BRDF_FILE && sc_brdf_file_error(b->file) != NULL;
 }
 
-/* sc_brdf_eval_many one point at a time. */
-static int eval_each(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+/* sc_brdf_eval_many one point at a time, the divisions by cos θ taking at least cos_floor. */
+static int eval_each(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts, double cos_floor,
                      sc_brdf_terms *out)
 {
     int done = n;
     for (int i = 0; i < n; i++) {
-        sc_brdf_eval(p, b, pts[i].frame, pts[i].l, pts[i].v, &out[i]);
+        evaluate(p, b, pts[i].frame, pts[i].l, pts[i].v, cos_floor, &out[i]);
         if (done == n && file_failed(b))
             done = i;
     }
@@ -209,16 +220,23 @@ int sc_brdf_eval_many(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *p
                       sc_brdf_terms *out)
 {
     if (b->kind != SC_BRDF_FILE || n <= 0)
-        return eval_each(p, b, n, pts, out);
+        return eval_each(p, b, n, pts, SC_COS_FLOOR, out);
     sc_brdf_point *above = malloc((size_t)n * sizeof *above);
     int *index = malloc((size_t)n * sizeof *index);
     double(*f)[3] = malloc((size_t)n * sizeof *f);
     int done = above && index && f ? eval_file_many(p, b, n, pts, out, above, index, f)
-                                   : eval_each(p, b, n, pts, out); /* out of memory */
+                                   : eval_each(p, b, n, pts, SC_COS_FLOOR, out); /* out of memory */
     free(above);
     free(index);
     free(f);
     return done;
+}
+
+int sc_brdf_eval_many_unguarded(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                                sc_brdf_terms *out)
+{
+    return b->kind == SC_BRDF_FILE ? sc_brdf_eval_many(p, b, n, pts, out)
+                                   : eval_each(p, b, n, pts, 0.0, out);
 }
 
 /* ---- validation ---- */

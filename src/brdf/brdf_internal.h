@@ -20,6 +20,7 @@ typedef struct {
     double cos_i, cos_o; /* n·l, n·v (both > 0 when a model is called) */
     double h[3];         /* half vector; n when l = −v */
     double cos_h;        /* n·h */
+    double cos_floor;    /* the divisions by cos θ_i, cos θ_o take at least this (sc_cos_floor) */
 } brdf_geometry;
 
 void sc_brdf_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_terms *out);
@@ -35,7 +36,12 @@ void sc_scale3(sc_prec p, const double colour[3], double scale, double out[3]);
 /* max(α, SC_ALPHA_FLOOR) rounded to p, and never 0: the precision's smallest step where the
  * floor itself rounds to 0 (lowp). */
 double sc_alpha_floor(sc_prec p, double alpha);
-/* max(x, SC_COS_FLOOR) */
-double sc_cos_floor(double x);
+/* max(x, g->cos_floor): SC_COS_FLOOR, or 0 (x itself) for sc_brdf_eval_many_unguarded */
+double sc_cos_floor(const brdf_geometry *g, double x);
+/* sc_brdf_eval_many of the models as written, without SC_COS_FLOOR: the albedo integrates them
+ * (check.c), since the floor would cut a band 10⁻⁶ rad wide off the horizon (f cos θ_o stays
+ * finite there in double: cos θ_o > 0 at every quadrature node). BRDF files are unchanged. */
+int sc_brdf_eval_many_unguarded(sc_prec p, const sc_brdf *b, int n, const sc_brdf_point *pts,
+                                sc_brdf_terms *out);
 
 #endif

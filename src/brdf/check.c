@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "brdf/brdf_internal.h"
 #include "util/quadrature.h"
 
 static const double pi = 3.14159265358979323846;
@@ -93,34 +94,36 @@ static int panel_exponent(double w)
 
 /* ∫ over the upper hemisphere of f(l, v) cos θ_o dω in (θ_o, φ_o), with panels refined
  * toward the mirror direction (θ_i, π) and breakpoints at θ_i and φ = π/2, 3π/2 (the kinks of
- * the Oren–Nayar max terms); the horizon θ_o = π/2 is an end, not a kink. */
-static void integrate(const sc_brdf *b, const sc_frame *f, const double l[3], double theta_i,
-                      int order, int panel_exp, sc_brdf_point *ring, sc_brdf_terms *terms,
-                      double out[3])
+ * the Oren–Nayar max terms); the horizon θ_o = π/2 is an end, not a kink. f is the model as
+ * written, without the floor of shade's divisions by cos θ_o (sc_brdf_eval_many_unguarded).
+ * Each ring is summed on its own, then the rings: returns the number of terms the longest of
+ * these sums adds (nodes in θ plus nodes in φ), which bounds their rounding. */
+static int integrate(const sc_brdf *b, const sc_frame *f, const double l[3], double theta_i,
+                     int order, int panel_exp, sc_brdf_point *ring, sc_brdf_terms *terms,
+                     double out[3])
 {
     double th[MAX_NODES], tw[MAX_NODES], ph[MAX_NODES], pw[MAX_NODES]; /* 99 KB: thread-safe */
     double bp[MAX_BREAKS];
     const double phi_kinks[2] = {pi / 2.0, 1.5 * pi};
-    /* where cos θ_o falls below the floor of the divisions by it (brdf.h): a kink */
-    const double floor_kink[1] = {acos(1e-6)};
-    int nt = composite_nodes(bp, breakpoints(0.0, pi / 2.0, theta_i, floor_kink, 1, panel_exp, bp),
-                             order, th, tw);
+    int nt = composite_nodes(bp, breakpoints(0.0, pi / 2.0, theta_i, NULL, 0, panel_exp, bp), order,
+                             th, tw);
     int np = composite_nodes(bp, breakpoints(0.0, 2.0 * pi, pi, phi_kinks, 2, panel_exp, bp), order,
                              ph, pw);
     memset(out, 0, 3 * sizeof *out);
     for (int i = 0; i < nt; i++) { /* a ring of constant θ_o at a time */
-        double st = sin(th[i]), ct = cos(th[i]);
+        double st = sin(th[i]), ct = cos(th[i]), ring_sum[3] = {0, 0, 0};
         for (int j = 0; j < np; j++) {
             ring[j] = (sc_brdf_point){
                 f, {l[0], l[1], l[2]}, {st * cos(ph[j]), st * sin(ph[j]), ct}};
         }
-        sc_brdf_eval_many(SC_DOUBLE, b, np, ring, terms);
-        for (int j = 0; j < np; j++) {
-            double w = tw[i] * pw[j] * st * ct;
+        sc_brdf_eval_many_unguarded(SC_DOUBLE, b, np, ring, terms);
+        for (int j = 0; j < np; j++)
             for (int c = 0; c < 3; c++)
-                out[c] += w * terms[j].f[c];
-        }
+                ring_sum[c] += pw[j] * terms[j].f[c];
+        for (int c = 0; c < 3; c++)
+            out[c] += tw[i] * st * ct * ring_sum[c];
     }
+    return nt + np;
 }
 
 int sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result *out)
@@ -143,15 +146,16 @@ int sc_albedo(const sc_brdf *b, double theta_i_deg, int order, sc_albedo_result 
             out->albedo[c] = NAN, out->error[c] = INFINITY;
         return -1;
     }
-    integrate(b, &f, l, th, order, panel_exp, ring, terms, out->albedo);
+    int terms_summed = integrate(b, &f, l, th, order, panel_exp, ring, terms, out->albedo);
     integrate(b, &f, l, th, order / 2 > 1 ? order / 2 : 2, panel_exp, ring, terms, coarse);
     free(ring);
     free(terms);
     /* plus the staircase of the lobe as double evaluates it: cos^m θ with m ~ 8/width²
-     * carries a relative rounding error up to m·2^-53 (see MIN_LOBE_WIDTH) */
-    double staircase = 8.0 * 0x1p-53 / (width * width);
+     * carries a relative rounding error up to m·2^-53 (see MIN_LOBE_WIDTH); plus the rounding
+     * of the sums, at most 2^-53 relative per term added (f >= 0) */
+    double relative = (8.0 / (width * width) + terms_summed) * 0x1p-53;
     for (int c = 0; c < 3; c++)
-        out->error[c] = resolved ? fabs(out->albedo[c] - coarse[c]) + staircase * out->albedo[c]
+        out->error[c] = resolved ? fabs(out->albedo[c] - coarse[c]) + relative * out->albedo[c]
                                  : INFINITY;
     return resolved ? 0 : -1;
 }

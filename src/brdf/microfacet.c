@@ -104,7 +104,7 @@ void sc_brdf_cook_torrance(sc_prec p, const sc_brdf *b, const brdf_geometry *g, 
     double dg = sc_mul_reach(p, out->D, out->G);
     if (dg == 0.0)
         return; /* D or G vanished: no 0/0 where the cosines' product underflows */
-    dg = Q(dg / Q(Q(4.0 * sc_cos_floor(g->cos_i)) * sc_cos_floor(g->cos_o)));
+    dg = Q(dg / Q(Q(4.0 * sc_cos_floor(g, g->cos_i)) * sc_cos_floor(g, g->cos_o)));
     if (b->form == SC_CT_1982)
         dg = Q(4.0 * dg);
     for (int k = 0; k < 3; k++)

@@ -25,7 +25,7 @@ void sc_brdf_phong(sc_prec p, const sc_brdf *b, const brdf_geometry *g, sc_brdf_
         return; /* an underflowed lobe never meets an overflowed normalization (0·∞) */
     switch (b->form) {
     case SC_PHONG_ORIGINAL: /* the 1/cos θ_i that makes it non-reciprocal */
-        scale = Q(lobe / Q(SC_PI * sc_cos_floor(g->cos_i)));
+        scale = Q(lobe / Q(SC_PI * sc_cos_floor(g, g->cos_i)));
         break;
     case SC_PHONG_MODIFIED: scale = Q(lobe / SC_PI); break;
     default: scale = Q(Q(Q(b->m + 2.0) / Q(2.0 * SC_PI)) * lobe); break;

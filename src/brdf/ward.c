@@ -25,7 +25,7 @@ static double ward_exponential(sc_prec p, const double hu[3], const sc_frame *f,
 static double ward_denominator(sc_prec p, const sc_brdf *b, const brdf_geometry *g,
                                const double hu[3], double ax, double ay)
 {
-    double ci = sc_cos_floor(g->cos_i), co = sc_cos_floor(g->cos_o);
+    double ci = sc_cos_floor(g, g->cos_i), co = sc_cos_floor(g, g->cos_o);
     double axy = Q(ax * ay);
     switch (b->form) {
     case SC_WARD_DUER: return sc_mul_reach(p, Q(4.0 * SC_PI * axy), Q(ci * co));
