@@ -162,6 +162,34 @@ static SC_INLINE vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float
     return vm_any(special) ? fixup2_lanes(special, x, y, r, f) : r;
 }
 
+/* f on each lane: the scalar built-ins, for the u1 tiers of instruction sets without double
+ * lanes, and the kernels that are loops over them (BATCH1_LANES, BATCH2_LANES). */
+static inline vf lanes1(vf x, float (*f)(float))
+{
+    float b[VW];
+    vf_storeu(b, x);
+    for (int k = 0; k < VW; k++)
+        b[k] = f(b[k]);
+    return vf_loadu(b);
+}
+
+static inline vf lanes2(vf x, vf y, float (*f)(float, float))
+{
+    float bx[VW], by[VW];
+    vf_storeu(bx, x);
+    vf_storeu(by, y);
+    for (int k = 0; k < VW; k++)
+        bx[k] = f(bx[k], by[k]);
+    return vf_loadu(bx);
+}
+
+#define BATCH1_LANES(name, f)                                                                      \
+    static inline vf name##_lanes(vf x) { return lanes1(x, f); }                                   \
+    BATCH1(name, name##_lanes)
+#define BATCH2_LANES(name, f)                                                                      \
+    static inline vf name##_lanes(vf x, vf y) { return lanes2(x, y, f); }                          \
+    BATCH2(name, name##_lanes)
+
 /* Polynomial loops are unrolled into straight-line FMAs with their constants in registers:
  * gcc -O2 left them as loops that broadcast a coefficient per step (exp u1 2.60 to
  * 1.44 ns, exp2 u4 0.91 to 0.48 ns in one bench run each). */
