@@ -162,6 +162,34 @@ static SC_INLINE vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float
     return vm_any(special) ? fixup2_lanes(special, x, y, r, f) : r;
 }
 
+/* f on each lane: the scalar built-ins, for the u1 tiers of instruction sets without double
+ * lanes, and the kernels that are loops over them (BATCH1_LANES, BATCH2_LANES). */
+static inline vf lanes1(vf x, float (*f)(float))
+{
+    float b[VW];
+    vf_storeu(b, x);
+    for (int k = 0; k < VW; k++)
+        b[k] = f(b[k]);
+    return vf_loadu(b);
+}
+
+static inline vf lanes2(vf x, vf y, float (*f)(float, float))
+{
+    float bx[VW], by[VW];
+    vf_storeu(bx, x);
+    vf_storeu(by, y);
+    for (int k = 0; k < VW; k++)
+        bx[k] = f(bx[k], by[k]);
+    return vf_loadu(bx);
+}
+
+#define BATCH1_LANES(name, f)                                                                      \
+    static inline vf name##_lanes(vf x) { return lanes1(x, f); }                                   \
+    BATCH1(name, name##_lanes)
+#define BATCH2_LANES(name, f)                                                                      \
+    static inline vf name##_lanes(vf x, vf y) { return lanes2(x, y, f); }                          \
+    BATCH2(name, name##_lanes)
+
 /* Polynomial loops are unrolled into straight-line FMAs with their constants in registers:
  * gcc -O2 left them as loops that broadcast a coefficient per step (exp u1 2.60 to
  * 1.44 ns, exp2 u4 0.91 to 0.48 ns in one bench run each). */
@@ -353,17 +381,18 @@ static const double exp2_d8[9] = {1.0,
 static inline vd exp2_reduced_d(vd f) { return vd_horner(f, exp2_d8, 9); }
 
 /* 2^x in double: 2^k · 2^(x − k), k = rint(x), |x| clamped to 1000 (pow's exponential). k by
- * a shifter: x + 1.5·2^52 rounds x to an integer, ties to even, and its low bits are k, so that
- * 2^k is an integer add and a shift. */
+ * a shifter: x + 1.5·2^52 rounds x to an integer, ties to even, and its low bits are k; the
+ * shift by 52 leaves k·2^52 (the shifter's bits above shift out), and adding it to the bits of
+ * 2^(x − k) in [0.7, 1.5) multiplies by 2^k exactly (exponents −1001 to 1000 stay normal),
+ * with an integer add instead of a floating-point multiply. */
 static SC_INLINE vd exp2_d(vd x)
 {
     const double shifter = 0x1.8p52;
     x = vd_min(vd_max(x, vd_set1(-1000.0)), vd_set1(1000.0));
     vd shifted = vd_add(x, vd_set1(shifter));
     vd k = vd_sub(shifted, vd_set1(shifter));
-    vl bias = vl_sub(vl_set1(1023), vd_as_vl(vd_set1(shifter)));
-    vd scale = vl_as_vd(vl_shl52(vl_add(vd_as_vl(shifted), bias)));
-    return vd_mul(exp2_reduced_d(vd_sub(x, k)), scale);
+    vl k_exponent = vl_shl52(vd_as_vl(shifted));
+    return vl_as_vd(vl_add(vd_as_vl(exp2_reduced_d(vd_sub(x, k))), k_exponent));
 }
 
 /* 2^f rounded once to float (f: float lanes, or the double lanes of exp_reduced_d) times 2^k
@@ -371,28 +400,38 @@ static SC_INLINE vd exp2_d(vd x)
  * 2^f >= 1 when k = −126, which the callers' ranges ensure. */
 static inline vf scale_by_2k(vf p, vi k) { return vi_as_vf(vi_add(vf_as_vi(p), vi_shl23(k))); }
 
-static const double inv_odd[7] = {1.0, 1.0 / 3, 1.0 / 5, 1.0 / 7, 1.0 / 9, 1.0 / 11, 1.0 / 13};
+/* 2/(2k + 1), and the same over ln 2: the coefficients of the series below for log and log2 */
+static const double two_over_odd[7] = {2.0, 2.0 / 3, 2.0 / 5, 2.0 / 7, 2.0 / 9, 2.0 / 11, 2.0 / 13};
+#define SC_LN2 0.6931471805599453094
+static const double log2_odd[7] = {2 / SC_LN2,       2 / (3 * SC_LN2), 2 / (5 * SC_LN2),
+                                   2 / (7 * SC_LN2), 2 / (9 * SC_LN2), 2 / (11 * SC_LN2),
+                                   2 / (13 * SC_LN2)};
 
-/* log m for m in [√½, √2): 2 atanh(s), s = (m − 1)/(m + 1), |s| <= 0.1716, by its series
- * 2s Σ s^2k/(2k+1) to `terms` terms: the first dropped is below 0.0295^terms/(2 terms + 1)
+/* s = (m − 1)/(m + 1) for m in [√½, √2), |s| <= 0.1716: log m = 2 atanh(s) = s Σ c_k s^2k,
+ * c_k = 2/(2k + 1), to `terms` terms: the first dropped is below 0.0295^terms/(2 terms + 1)
  * relative (6 terms: 2^-34; 7: 2^-39.5, what pow needs, since y log2 x multiplies it). */
-static inline vd log_m_d(vd m, int terms)
+static SC_INLINE vd atanh_arg(vd m)
 {
-    vd s = vd_div(vd_sub(m, vd_set1(1.0)), vd_add(m, vd_set1(1.0)));
-    return vd_mul(vd_mul(vd_set1(2.0), s), vd_horner(vd_mul(s, s), inv_odd, terms));
+    return vd_div(vd_sub(m, vd_set1(1.0)), vd_add(m, vd_set1(1.0)));
 }
 
-/* log2 x = e + log m / ln 2 on one half (m, e from log_split), with `terms` series terms */
+static inline vd log_m_d(vd m, int terms)
+{
+    vd s = atanh_arg(m);
+    return vd_mul(s, vd_horner(vd_mul(s, s), two_over_odd, terms));
+}
+
+/* log2 x = e + s Σ c_k s^2k / ln 2 on one half (m, e from log_split), with `terms` series terms:
+ * 1/ln 2 folded into the coefficients (each within 2^-52 of its value) and e added by the last
+ * FMA, two operations fewer than log m / ln 2 + e. */
 static inline vd log2_parts_d(vd m, vd e, int terms)
 {
-    return vd_fma(log_m_d(m, terms), vd_set1(1.4426950408889634074), e);
+    vd s = atanh_arg(m);
+    return vd_fma(s, vd_horner(vd_mul(s, s), log2_odd, terms), e);
 }
 
 static inline vd log2_me_d(vd m, vd e) { return log2_parts_d(m, e, 6); }
-static inline vd log_me_d(vd m, vd e)
-{
-    return vd_fma(e, vd_set1(0.6931471805599453094), log_m_d(m, 6));
-}
+static inline vd log_me_d(vd m, vd e) { return vd_fma(e, vd_set1(SC_LN2), log_m_d(m, 6)); }
 
 /* A two-argument double kernel on the low and high halves, rounded back to float. */
 static inline vf on_doubles2(vf a, vf b, vd (*f)(vd, vd))

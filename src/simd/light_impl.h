@@ -22,7 +22,7 @@ static SC_INLINE vf light_exp(int tier, vf x)
 #ifdef SIMD_HAS_DOUBLE
     return exp_u1(x);
 #else
-    return sc_expf(x);
+    return lanes1(x, sc_expf);
 #endif
 }
 

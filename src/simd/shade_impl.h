@@ -64,8 +64,12 @@ static SC_INLINE vf tier_rsqrt(int tier, vf x)
 {
     if (tier == ACCURATE)
         return vf_div(vf_set1(1.0f), vf_sqrt(x));
-    if (tier == REFINED) /* one lane has no estimate instruction: a root and a division */
-        return VW == 1 ? vf_div(vf_set1(1.0f), vf_sqrt(x)) : rsqrt_refined(x);
+    if (tier == REFINED) /* portable C has no estimate instruction: a root and a division */
+#ifdef SIMD_NO_ESTIMATES
+        return vf_div(vf_set1(1.0f), vf_sqrt(x));
+#else
+        return rsqrt_refined(x);
+#endif
     return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
 }
 
@@ -120,7 +124,7 @@ static SC_INLINE vf tier_pow(int tier, vf x, vf y)
 #ifdef SIMD_HAS_DOUBLE
     return pow_d(x, y);
 #else
-    return sc_powf(x, y);
+    return lanes2(x, y, sc_powf);
 #endif
 }
 

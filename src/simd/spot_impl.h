@@ -12,7 +12,7 @@ static SC_INLINE vf light_pow(int tier, vf x, vf y)
 #ifdef SIMD_HAS_DOUBLE
     return pow_u1(x, y);
 #else
-    return sc_powf(x, y);
+    return lanes2(x, y, sc_powf);
 #endif
 }
 
@@ -58,7 +58,11 @@ static SC_INLINE vf pow_uint_u1(vf x, unsigned m)
 #ifdef SIMD_HAS_DOUBLE
     return vf_from_vd(vd_pow_uint(vd_from_lo(x), m), vd_pow_uint(vd_from_hi(x), m));
 #else
-    return (float)d_pow_uint(x, m); /* one lane: vf is float */
+    float b[VW];
+    vf_storeu(b, x);
+    for (int k = 0; k < VW; k++)
+        b[k] = (float)d_pow_uint(b[k], m);
+    return vf_loadu(b);
 #endif
 }
 

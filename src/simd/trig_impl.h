@@ -302,8 +302,8 @@ BATCH1(cos_u1, cos_u1)
 BATCH1(acos_u1, acos_u1)
 BATCH2(atan2_u1, atan2_u1)
 #else
-BATCH1(sin_u1, sc_sinf)
-BATCH1(cos_u1, sc_cosf)
-BATCH1(acos_u1, sc_acosf)
-BATCH2(atan2_u1, sc_atan2f)
+BATCH1_LANES(sin_u1, sc_sinf)
+BATCH1_LANES(cos_u1, sc_cosf)
+BATCH1_LANES(acos_u1, sc_acosf)
+BATCH2_LANES(atan2_u1, sc_atan2f)
 #endif
