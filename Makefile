@@ -182,27 +182,34 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 	$(CC) $(LDALL) -o $@ $< $(STATIC) $(LDLIBS)
 
 # ---- tests -------------------------------------------------------------------
-# `check` = unit + e2e with this compiler, the same under ASan+UBSan, then the fuzz smoke.
+# `check` = unit + e2e with this compiler, the same under ASan+UBSan built with the other
+# compiler (gcc and clang: so both compile every file with -Werror), then the fuzz smoke.
 # Each stage builds in parallel (JOBS, default the number of processors), then runs its tests
 # in parallel too: every unit binary and every e2e script is a make target of its own
 # (tests/run-test.sh keeps its output in $(BUILD)/results/ and prints it when it fails), so
 # the reports do not interleave. Under the sanitizers the unit tests' large numeric sweeps run
 # a deterministic 1/50 sample (tests/unit/scale.h); the plain stage checks every bound on all
 # 10^6 inputs per kernel, tier and instruction set.
-# Most of check's CPU is compiling: one gcc tree (make test-bins) took 9.8 CPU-minutes, about 2
-# of them for each of the four SIMD kernel files of src/simd/ before they were built with -g1
-# (about half that since; under ASan avx2/kernels.c took over 131 s at -O1 as at -O2: a lower
-# OPT for SAN gains nothing); the plain unit tests 2.4
-# (test_batch_light 45 s, test_batch 36 s: all 10^6 inputs), the plain e2e 0.8 (767 checks).
+# Most of check's CPU is compiling the four SIMD kernel files of src/simd/: in a fresh clone the
+# gcc tree took 318 CPU-s, 256 of them for scalar.c (73 s), sse41, avx2 and avx512 (60-63 s
+# each); clang with ASan+UBSan 156 s for avx2, 137 s for avx512, 39 s for the 81 other files.
+# The plain unit and e2e tests and lib-tests took 191 CPU-s (all 10^6 inputs; test_batch_light
+# and test_batch the heaviest).
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+# The sanitizer tree's compiler: the other of gcc and clang, or CC itself when that one is not
+# installed (check says so). When it is clang, the fuzz tree takes its SIMD kernel objects.
+OTHER_CC := $(if $(filter clang%,$(CCNAME)),gcc,clang)
+SAN_CC   ?= $(if $(shell command -v $(OTHER_CC)),$(OTHER_CC),$(CC))
+SAN_VARS := SAN=1 BUILD=$(BUILD)-san CC=$(SAN_CC)
 check: deps
 	@$(MAKE) --no-print-directory format-check
-	@$(MAKE) --no-print-directory -j$(JOBS) test-bins
+	@$(MAKE) --no-print-directory -j$(JOBS) test-bins build-all
 	@$(MAKE) --no-print-directory tests lib-tests
-	@$(MAKE) --no-print-directory -j$(JOBS) SAN=1 BUILD=$(BUILD)-san test-bins
-	@$(MAKE) --no-print-directory SAN=1 BUILD=$(BUILD)-san tests
-	@$(MAKE) --no-print-directory fuzz
-	@echo "check: all test stages passed ($(CCNAME))"
+	@[ "$(SAN_CC)" != "$(CC)" ] || echo "check: $(OTHER_CC) not installed: the sanitizer stage is built with $(CC) too"
+	@$(MAKE) --no-print-directory -j$(JOBS) $(SAN_VARS) test-bins build-all
+	@$(MAKE) --no-print-directory $(SAN_VARS) tests
+	@$(MAKE) --no-print-directory fuzz $(if $(filter $(FUZZ_CC),$(SAN_CC)),FUZZ_SIMD_FROM=$(BUILD)-san)
+	@echo "check: all test stages passed ($(CCNAME), sanitizers: $(notdir $(firstword $(SAN_CC))))"
 
 # A fresh clone of HEAD in an empty directory, checked with and without the optional SLEEF.
 .PHONY: check-fresh
@@ -275,7 +282,8 @@ endif
 FUZZ_RUNS    := $(patsubst tests/fuzz/%.c,fuzz/%,$(FUZZ_SRCS))
 .PHONY: $(FUZZ_RUNS)
 fuzz: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) CC=$(FUZZ_CC) BUILD=build-fuzz SAN=1 FUZZ=1 fuzz-bins
+	@$(MAKE) --no-print-directory -j$(JOBS) CC=$(FUZZ_CC) BUILD=build-fuzz SAN=1 FUZZ=1 \
+	    $(if $(FUZZ_SIMD_FROM),FUZZ_SIMD_FROM=$(FUZZ_SIMD_FROM)) fuzz-bins
 	@$(MAKE) --no-print-directory -j$(JOBS) -Otarget $(FUZZ_RUNS)
 	@echo "fuzz: $(words $(FUZZ_RUNS)) passed, 0 failed"
 
@@ -284,6 +292,15 @@ $(FUZZ_RUNS): fuzz/%:
 
 .PHONY: fuzz-bins
 fuzz-bins: $(FUZZ_BINS)
+
+# FUZZ_SIMD_FROM=TREE (check): the SIMD kernel objects are those of TREE, built by the same
+# compiler with the same sanitizers, without the fuzzer's coverage (the parsers are fuzzed, not
+# the kernels): they are the most of a tree's compile time.
+ifneq ($(and $(FUZZ_SIMD_FROM),$(filter 1,$(FUZZ))),)
+$(BUILD)/obj/src/simd/%.o: $(FUZZ_SIMD_FROM)/obj/src/simd/%.o
+	@mkdir -p $(dir $@)
+	cp $< $@
+endif
 
 build-fuzz/fuzz/%: $(BUILD)/obj/tests/fuzz/%.o $(SUP_OBJS) $(STATIC)
 	@mkdir -p $(dir $@)
