@@ -255,11 +255,9 @@ static SC_INLINE void normalize_tier(int tier, const float *const *in, float *co
 }
 
 TIERED_LANE(normalize_refined, normalize_tier, REFINED)
-TIERED_LANE(normalize_f8, normalize_tier, FAST8)
 BATCH_N(dot_bits22, 6, 1, dot_lane)
 BATCH_N(reflect_bits22, 6, 3, reflect_lane)
 BATCH_N(normalize_u3, 3, 3, normalize_refined)
-BATCH_N(normalize_bits11, 3, 3, normalize_f8)
 BATCH_N(length_u2, 3, 1, length_lane)
 
 static const float inv_pi_f = 0.318309886183790671538f;
