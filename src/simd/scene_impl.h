@@ -65,26 +65,30 @@ static SC_INLINE vf own_specular(int tier, int nt, sc_lobe lobe, const shade_vec
                                  vf nl, vf nv)
 {
     v3 h = v3_add(l, v);
-    vf hh = vf_max(v3_dot(h, h), vf_set1(FLT_MIN)); /* l = −v: h = 0 */
-    if (lobe == SC_LOBE_BLINN) {                    /* RTR3 §7.6 */
-        /* n·h = (n·l + n·v)/|h|, floored at 2^-40 */
-        vf nh = vf_max(vf_mul(vf_add(nl, nv), tier_rsqrt(nt, hh)), vf_set1(0x1p-40f));
+    vf hh = v3_dot(h, h);
+    if (lobe == SC_LOBE_BLINN) { /* RTR3 §7.6 */
+        /* n·h = (n·l + n·v)/|h|, floored at 2^-40; l = −v: h = 0 */
+        vf inv_h = tier_rsqrt(nt, vf_max(hh, vf_set1(FLT_MIN)));
+        vf nh = vf_max(vf_mul(vf_add(nl, nv), inv_h), vf_set1(0x1p-40f));
         const sc_shade_uniforms *s = c->s;
         unsigned m = tier == ACCURATE && s->lobe_m > POW_INT_MAX_ACCURATE ? 0u : s->lobe_m;
         return m ? pow_int(nh, m, c->cutoff) : tier_pow(tier, nh, c->m);
     }
     /* GGX D = α² / (π d²), d = n·h² (α² − 1) + 1; V = G2/(4 n·l n·v) for Smith height-correlated
      * = 1 / (2 (g_v + g_l)), g_v = n·l √(n·v² (1 − α²) + α²), g_l = n·v √(n·l² (1 − α²) + α²)
-     * (Heitz 2014 eq. 99): D V = α²/(2π) / (d² (g_v + g_l)), one reciprocal.
-     * F = F0 + (1 − F0) b^5, b = 1 − v·h (Schlick 1994), floored at 2^-24 so that b^5 is no
-     * subnormal (F moves by 2^-120 at most). With −1/|h|, b is one FMA; n·h only squared. */
-    vf neg_inv_h = tier_neg_rsqrt(nt, hh);
-    vf nh = vf_mul(vf_add(nl, nv), neg_inv_h);
-    vf d = vf_fma(vf_mul(nh, nh), c->a2m1, vf_set1(1.0f));
-    vf gv = vf_mul(nl, tier_sqrt(tier, vf_fma(vf_mul(nv, nv), c->one_a2, c->a2)));
-    vf gl = vf_mul(nv, tier_sqrt(tier, vf_fma(vf_mul(nl, nl), c->one_a2, c->a2)));
-    vf dv = tier_rcp(tier, vf_mul(vf_mul(d, d), vf_add(gv, gl)));
-    vf b = vf_max(vf_fma(v3_dot(v, h), neg_inv_h, vf_set1(1.0f)), vf_set1(0x1p-24f));
+     * (Heitz 2014 eq. 99): D V = α²/(2π) / (d² (g_v + g_l)). With n·h² = (n·l + n·v)²/|h|²,
+     * d |h|² = (n·l + n·v)² (α² − 1) + |h|² needs no root of |h|², and D V = α²/(2π) |h|⁴ /
+     * ((d |h|²)² (g_v + g_l)), one reciprocal. The roots are square-root instructions in every
+     * tier: one operation each, rounded once, where an estimate needs two (bits8) or six.
+     * F = F0 + (1 − F0) b^5, b = 1 − v·h (Schlick 1994), v·h = (1 + v·l)/|h| = |h|/2 for unit
+     * l and v. b is 0 or at least 2^-24 in magnitude (1 − |h|/2, exact for |h|/2 >= 1/2), so
+     * b^5 is no subnormal. */
+    vf sum = vf_add(nl, nv);
+    vf dh = vf_fma(vf_mul(sum, sum), c->a2m1, hh);
+    vf gv = vf_mul(nl, vf_sqrt(vf_fma(vf_mul(nv, nv), c->one_a2, c->a2)));
+    vf gl = vf_mul(nv, vf_sqrt(vf_fma(vf_mul(nl, nl), c->one_a2, c->a2)));
+    vf dv = vf_mul(vf_mul(hh, hh), tier_rcp(tier, vf_mul(vf_mul(dh, dh), vf_add(gv, gl))));
+    vf b = vf_fma(vf_sqrt(hh), vf_set1(-0.5f), vf_set1(1.0f));
     vf b2 = vf_mul(b, b);
     return vf_mul(dv, vf_fma(c->one_f0, vf_mul(vf_mul(b2, b2), b), c->f0));
 }

@@ -69,16 +69,6 @@ static SC_INLINE vf tier_rsqrt(int tier, vf x)
     return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
 }
 
-/* −1/√x: the sign folded into the Newton step (FAST12), or into the division */
-static SC_INLINE vf tier_neg_rsqrt(int tier, vf x)
-{
-    if (tier == ACCURATE)
-        return vf_div(vf_set1(-1.0f), vf_sqrt(x));
-    if (tier == FAST12)
-        return rsqrt_newton_signed(x, -1.0f);
-    return vf_sub(vf_set1(0.0f), tier_rsqrt(tier, x));
-}
-
 static SC_INLINE vf tier_rcp(int tier, vf x)
 {
     if (tier == ACCURATE)
