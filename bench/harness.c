@@ -44,16 +44,15 @@ typedef struct {
                      * ÷ (2); fast an estimate and a Newton step: est, 2 mul, fma, mul (5) */
     double unit;    /* a/|a| from a·a: max, then accurate √ and 3 ÷ (5), fast rsqrt_n + 3 mul */
     double rcp;     /* 1/x: accurate ÷; bits12 est, mul, sub, mul (4); bits8 est */
-    double sqrt;    /* √x: accurate √; bits12 x · rsqrt_n (6); bits8 x · est (2) */
 } tier_costs;
 
 static tier_costs shade_tier_costs(const char *tier)
 {
     if (strcmp(tier, "accurate") == 0)
-        return (tier_costs){2, 5, 1, 1};
+        return (tier_costs){2, 5, 1};
     if (strcmp(tier, "bits12") == 0)
-        return (tier_costs){5, 9, 4, 6};
-    return (tier_costs){5, 9, 1, 2}; /* bits8 */
+        return (tier_costs){5, 9, 4};
+    return (tier_costs){5, 9, 1}; /* bits8 */
 }
 
 /* Multiplies of x^m by binary powering (pow_int): ⌊log2 m⌋ squarings, popcount(m) − 1
@@ -70,8 +69,10 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
 {
     tier_costs t = shade_tier_costs(tier);
     const sc_brdf *b = &s->model.brdf;
-    /* n, v: two dots (6), the overflow test (2 compares, or: 3), two units; n·v (3) */
-    double ops = 12 + 2 * t.unit;
+    /* n, v: two dots (6), the overflow test (2 compares, or: 3), two units; n·v (3; the fast
+     * tiers' of the loaded vectors times both inverse lengths: 5) */
+    int fast = strcmp(tier, "accurate") != 0;
+    double ops = 12 + 2 * t.unit + (fast ? 2 : 0);
     /* a light's direction and factor, by kind (light_dir): directional none; point p − pos (3),
      * r² (3), max, min and 1/r² (2 + rcp), l (overflow compare + unit), the r = 0 lanes
      * (compare, 3 selects), w = n·l falloff (1); a spot also −l·axis (4), the cone test (1),
@@ -81,22 +82,26 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
     double point = 14 + t.rcp + t.unit, spot = point + 22;
     /* the lobe (own_specular; lobe factor and colours folded into the uniforms): h = l + v (3),
      * h·h (3), max (1); then Blinn-Phong n·h = (n·l + n·v) rsqrt (add, mul, max: 3 + rsqrt_n),
-     * the cutoff (compare, select) and the squarings of pow_int; GGX −1/|h| (rsqrt_n), n·h
-     * (add, mul), d (mul, fma), g_v and g_l (each mul, fma, √, mul), 1/(d² (g_v + g_l)) (mul,
-     * add, mul, rcp), b = max(1 − v·h/|h|) (dot, fma, max: 5), b⁵ and F (mul, mul, mul, fma),
-     * D V F (mul); both then the lit select and product (2) and acc += (3 FMA) */
+     * the cutoff (compare, select) and the squarings of pow_int; GGX without the max: d |h|²
+     * (add, mul, fma), g_v and g_l (each mul, fma, √, mul), |h|⁴/((d |h|²)² (g_v + g_l)) (mul,
+     * add, mul, rcp, mul, mul), v·l (3), b = 1 − √max((1 + v·l)/2, 0) (fma, max, √, sub), b⁵
+     * and F (mul, mul, mul, fma), D V F (mul); both then the lit select and product (2) and
+     * acc += (3 FMA) */
     double lobe = 0;
     if (b->kind == SC_BRDF_BLINN_PHONG)
         lobe = 7 + 3 + t.rsqrt_n + 2 + pow_int_muls(b->m) + 5;
     else if (b->kind == SC_BRDF_COOK_TORRANCE)
-        lobe = 7 + t.rsqrt_n + 4 + 2 * (3 + t.sqrt) + 3 + t.rcp + 5 + 5 + 5;
+        lobe = 6 + 3 + 2 * 4 + 5 + t.rcp + 3 + 4 + 4 + 1 + 5;
     /* each light: n·l (3), the lit mask (2 compares, and), the weight select (1), acc += w E
      * c_diff/π (3 FMA); in the generic loop (a scene of no straight-line variant) also its
-     * colours per vector (light_vecs_of: 6 mul) */
+     * colours per vector (light_vecs_of: 6 mul); a directional light in the fast tiers takes
+     * n·l, and GGX's v·l, of the loaded vectors, times the inverse length (1 mul each) */
     int generic = sc_batch_plan_uniforms(plan)->variant == 0;
     for (int k = 0; k < s->n_lights; k++) {
         sc_light_kind kind = s->lights[k].kind;
         ops += 10 + (generic ? 6 : 0) + lobe;
+        if (fast && kind == SC_LIGHT_DIRECTIONAL)
+            ops += b->kind == SC_BRDF_COOK_TORRANCE ? 2 : 1;
         ops += kind == SC_LIGHT_POINT ? point : kind == SC_LIGHT_SPOT ? spot : 0;
     }
     return ops;

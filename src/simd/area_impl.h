@@ -137,7 +137,8 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
         v3 ls = v3_select(at_r, r, v3_normalize_dd(nt, P, pp));
         vf cos_s = v3_dot(n, ls);
         vm lit = vf_lt(zero, cos_s);
-        vf sp = vf_select(lit, own_specular(tier, nt, lobe, sv, n, v, ls, cos_s, nv), zero);
+        vf sp = vf_select(lit, own_specular(tier, nt, lobe, sv, n, v, ls, cos_s, nv, v3_dot(v, ls)),
+                          zero);
         vf w = vf_mul(vf_mul(sp, energy_normalisation(lobe, sv, a, d)),
                       vf_mul(area_irradiance(kind, a, ls, c, dc, p), vf_max(cos_s, zero)));
         v3 ks = lv->spec;

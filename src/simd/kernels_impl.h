@@ -324,14 +324,12 @@ BATCH2(pow_bits12, pow_bits12)
 BATCH2(pow_bits8, pow_bits8)
 
 /* inversesqrt: the estimate instruction (relative error <= 1.5·2^-12), and one Newton step
- * y (3 − x y²)/2, as y (3/2 + (−x/2) y · y): four operations, one of them an FMA. s/√x for
- * s = ±1: the sign rides on the step's two constants, at no cost. */
-static inline vf rsqrt_newton_signed(vf x, float s)
+ * y (3 − x y²)/2, as y (3/2 + (−x/2) y · y): four operations, one of them an FMA. */
+static inline vf rsqrt_newton(vf x)
 {
     vf y = vf_rsqrt_est(x);
-    return vf_mul(y, vf_fma(vf_mul(vf_mul(x, vf_set1(-0.5f * s)), y), y, vf_set1(1.5f * s)));
+    return vf_mul(y, vf_fma(vf_mul(vf_mul(x, vf_set1(-0.5f)), y), y, vf_set1(1.5f)));
 }
-static inline vf rsqrt_newton(vf x) { return rsqrt_newton_signed(x, 1.0f); }
 /* 1/√x to about one ULP, for normal x: the estimate y, its residual d = x y² − 1 (an FMA), and
  * the Newton–Raphson step to second order, y − y d (1/2 − 3/8 d): the first-order step alone
  * leaves 3/8 d² (up to 2^-22.4 relative with rsqrtps's 1.5·2^-12). */

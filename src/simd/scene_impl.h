@@ -68,34 +68,66 @@ static SC_INLINE vf n_dot_h(int tier, v3 n, v3 h, vf nl, vf nv)
     return tier == ACCURATE ? v3_dot(n, h) : vf_add(nl, nv);
 }
 
-/* The kernel's own lobes for one light (n, v, l unit; nl = n·l, nv = n·v) without their
+/* The shading point: n and v unit and n·v, and in the fast tiers also n and v as loaded (lanes
+ * whose squares overflowed scaled by 2^-100) with their inverse lengths, so that n·v, and a
+ * directional light's n·l and v·l, are a dot product of the loaded vectors and one product:
+ * computed beside the normalization, not after it (its latency is most of a vector's). */
+typedef struct {
+    v3 n, v, n0, v0;
+    vf nv, inv_n, inv_v;
+} surface;
+
+static SC_INLINE surface surface_at(int tier, const float *const *in, size_t i)
+{
+    v3 n = v3_load(in, 0, i), v = v3_load(in, 3, i);
+    vf nn = v3_dot(n, n), vv = v3_dot(v, v), inf = vf_set1(INFINITY);
+    if (vm_any(vm_or(vf_eq(nn, inf), vf_eq(vv, inf)))) /* one test for the rare lanes of both */
+        n = v3_unoverflow(n, &nn), v = v3_unoverflow(v, &vv);
+    surface s = {.n0 = n, .v0 = v};
+    if (tier == ACCURATE) {
+        s.n = v3_unit_dd(tier, n, nn), s.v = v3_unit_dd(tier, v, vv);
+        s.nv = v3_dot(s.n, s.v);
+        return s;
+    }
+    s.inv_n = inv_length_dd(tier, nn), s.inv_v = inv_length_dd(tier, vv);
+    s.n = v3_scale(n, s.inv_n), s.v = v3_scale(v, s.inv_v);
+    s.nv = vf_mul(v3_dot(n, v), vf_mul(s.inv_n, s.inv_v));
+    return s;
+}
+
+/* The kernel's own lobes for one light (n, v, l unit; nl = n·l, nv = n·v, vl = v·l) without their
  * constant factor (light_vecs_of): normalized or plain Blinn-Phong (n·h)^m, and GGX with Smith
  * height-correlated masking and Schlick's Fresnel (grey F0). nt is the tier of the
  * normalizations. */
 static SC_INLINE vf own_specular(int tier, int nt, sc_lobe lobe, const shade_vecs *c, v3 n, v3 v,
-                                 v3 l, vf nl, vf nv)
+                                 v3 l, vf nl, vf nv, vf vl)
 {
     v3 h = v3_add(l, v);
-    vf hh = vf_max(v3_dot(h, h), vf_set1(FLT_MIN)); /* l = −v: h = 0 */
-    if (lobe == SC_LOBE_BLINN) {                    /* RTR3 §7.6 */
-        /* n·h/|h|, floored at 2^-40 */
-        vf nh = vf_max(vf_mul(n_dot_h(tier, n, h, nl, nv), tier_rsqrt(nt, hh)), vf_set1(0x1p-40f));
+    vf hh = v3_dot(h, h);
+    if (lobe == SC_LOBE_BLINN) { /* RTR3 §7.6 */
+        /* n·h = n·(l + v)/|h| (n_dot_h), floored at 2^-40; l = −v: h = 0 */
+        vf inv_h = tier_rsqrt(nt, vf_max(hh, vf_set1(FLT_MIN)));
+        vf nh = vf_max(vf_mul(n_dot_h(tier, n, h, nl, nv), inv_h), vf_set1(0x1p-40f));
         const sc_shade_uniforms *s = c->s;
         unsigned m = tier == ACCURATE && s->lobe_m > POW_INT_MAX_ACCURATE ? 0u : s->lobe_m;
         return m ? pow_int(nh, m, c->cutoff) : tier_pow(tier, nh, c->m);
     }
     /* GGX D = α² / (π d²), d = n·h² (α² − 1) + 1; V = G2/(4 n·l n·v) for Smith height-correlated
      * = 1 / (2 (g_v + g_l)), g_v = n·l √(n·v² (1 − α²) + α²), g_l = n·v √(n·l² (1 − α²) + α²)
-     * (Heitz 2014 eq. 99): D V = α²/(2π) / (d² (g_v + g_l)), one reciprocal.
-     * F = F0 + (1 − F0) b^5, b = 1 − v·h (Schlick 1994), floored at 2^-24 so that b^5 is no
-     * subnormal (F moves by 2^-120 at most). With −1/|h|, b is one FMA; n·h only squared. */
-    vf neg_inv_h = tier_neg_rsqrt(nt, hh);
-    vf nh = vf_mul(n_dot_h(tier, n, h, nl, nv), neg_inv_h);
-    vf d = vf_fma(vf_mul(nh, nh), c->a2m1, vf_set1(1.0f));
-    vf gv = vf_mul(nl, tier_sqrt(tier, vf_fma(vf_mul(nv, nv), c->one_a2, c->a2)));
-    vf gl = vf_mul(nv, tier_sqrt(tier, vf_fma(vf_mul(nl, nl), c->one_a2, c->a2)));
-    vf dv = tier_rcp(tier, vf_mul(vf_mul(d, d), vf_add(gv, gl)));
-    vf b = vf_max(vf_fma(v3_dot(v, h), neg_inv_h, vf_set1(1.0f)), vf_set1(0x1p-24f));
+     * (Heitz 2014 eq. 99): D V = α²/(2π) / (d² (g_v + g_l)). With n·h² = (n·(l + v))²/|h|²,
+     * d |h|² = (n·(l + v))² (α² − 1) + |h|² needs no root of |h|², and D V = α²/(2π) |h|⁴ /
+     * ((d |h|²)² (g_v + g_l)), one reciprocal. The roots are square-root instructions in every
+     * tier: one operation each, rounded once, where an estimate needs two (bits8) or six.
+     * F = F0 + (1 − F0) b^5, b = 1 − v·h (Schlick 1994), v·h = (1 + v·l)/|h| = √((1 + v·l)/2)
+     * for unit l and v, |h|² = 2 (1 + v·l): apart from |h|, F's factor needs no h at all. b is 0
+     * or at least 2^-24 (1 − v·h, exact for v·h >= 1/2), so b^5 is no subnormal. */
+    vf sum = n_dot_h(tier, n, h, nl, nv); /* n·h |h| */
+    vf dh = vf_fma(vf_mul(sum, sum), c->a2m1, hh);
+    vf gv = vf_mul(nl, vf_sqrt(vf_fma(vf_mul(nv, nv), c->one_a2, c->a2)));
+    vf gl = vf_mul(nv, vf_sqrt(vf_fma(vf_mul(nl, nl), c->one_a2, c->a2)));
+    vf dv = vf_mul(vf_mul(hh, hh), tier_rcp(tier, vf_mul(vf_mul(dh, dh), vf_add(gv, gl))));
+    vf vh2 = vf_max(vf_fma(vl, vf_set1(0.5f), vf_set1(0.5f)), vf_set1(0.0f));
+    vf b = vf_sub(vf_set1(1.0f), vf_sqrt(vh2));
     vf b2 = vf_mul(b, b);
     return vf_mul(dv, vf_fma(c->one_f0, vf_mul(vf_mul(b2, b2), b), c->f0));
 }
@@ -170,18 +202,34 @@ static SC_INLINE v3 area_term(int tier, sc_lobe lobe, const shade_vecs *c, sc_li
                               const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v, vf nv,
                               const float *const *in, size_t i, v3 acc);
 
+/* n·l and v·l: a directional light's from the loaded vectors in the fast tiers (surface) */
+static SC_INLINE void light_cosines(int tier, light_shape shape, const surface *sf, v3 l, vf *nl,
+                                    vf *vl)
+{
+    if (tier != ACCURATE && shape.kind == SC_LIGHT_DIRECTIONAL) {
+        *nl = vf_mul(v3_dot(sf->n0, l), sf->inv_n);
+        *vl = vf_mul(v3_dot(sf->v0, l), sf->inv_v);
+        return;
+    }
+    *nl = v3_dot(sf->n, l);
+    *vl = v3_dot(sf->v, l);
+}
+
 /* acc + E cos θ_i ⊙ f(l, v) for one light; lobe is a constant at each call. Unlit lanes drop
  * f: it may be ∞ or NaN there. */
 static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, light_shape shape,
-                               const sc_light_uniforms *lt, const light_vecs *lv, v3 n, v3 v, vf nv,
+                               const sc_light_uniforms *lt, const light_vecs *lv, const surface *sf,
                                const float *const *in, size_t i, v3 acc)
 {
+    v3 n = sf->n, v = sf->v;
+    vf nv = sf->nv;
     if (shape.kind >= SC_LIGHT_SPHERE)
         return area_term(tier, lobe, c, shape.kind, lt, lv, n, v, nv, in, i, acc);
     int nt = tier == FAST8 ? FAST12 : tier;
     vf falloff, zero = vf_set1(0.0f);
     v3 l = light_dir(tier, nt, shape, lt, lv, n, in, i, &falloff);
-    vf nl = v3_dot(n, l);
+    vf nl, vl;
+    light_cosines(tier, shape, sf, l, &nl, &vl);
     vm lit = vm_and(vf_lt(zero, nl), vf_lt(zero, nv));
     vf w = vf_select(lit, vf_mul(nl, falloff), zero); /* cos θ_i · falloff */
     if (lobe == SC_LOBE_MODEL) {
@@ -196,7 +244,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
                vf_fma(w, lv->diff.z, acc.z)};
     if (lobe == SC_LOBE_NONE)
         return acc;
-    vf ws = vf_select(lit, vf_mul(w, own_specular(tier, nt, lobe, c, n, v, l, nl, nv)), zero);
+    vf ws = vf_select(lit, vf_mul(w, own_specular(tier, nt, lobe, c, n, v, l, nl, nv, vl)), zero);
     return (v3){vf_fma(ws, lv->spec.x, acc.x), vf_fma(ws, lv->spec.y, acc.y),
                 vf_fma(ws, lv->spec.z, acc.z)};
 }
@@ -211,18 +259,16 @@ static SC_INLINE void shade_tier(int tier, sc_lobe lobe, light_shape shape, int 
 {
     const sc_shade_uniforms *s = c->s;
     int nt = tier == FAST8 ? FAST12 : tier;
-    v3 n = v3_load(in, 0, i), v = v3_load(in, 3, i);
-    v3_normalize2(nt, &n, &v);
-    vf nv = v3_dot(n, v);
+    surface sf = surface_at(nt, in, i);
     v3 acc = c->amb;
     if (count < 0)
         for (int k = 0; k < s->n_lights; k++) {
             const sc_light_uniforms *lt = &s->lights[k];
             acc = light_term(tier, lobe, c, (light_shape){lt->kind, lt->atten}, lt, &c->lights[k],
-                             n, v, nv, in, i, acc);
+                             &sf, in, i, acc);
         }
     for (int k = 0; k < count; k++) /* a constant count: unrolled */
-        acc = light_term(tier, lobe, c, shape, &s->lights[k], &c->lights[k], n, v, nv, in, i, acc);
+        acc = light_term(tier, lobe, c, shape, &s->lights[k], &c->lights[k], &sf, in, i, acc);
     v3_store(acc, out, i);
 }
 

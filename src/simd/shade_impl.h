@@ -73,16 +73,6 @@ static SC_INLINE vf tier_rsqrt(int tier, vf x)
     return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
 }
 
-/* −1/√x: the sign folded into the Newton step (FAST12), or into the division */
-static SC_INLINE vf tier_neg_rsqrt(int tier, vf x)
-{
-    if (tier == ACCURATE)
-        return vf_div(vf_set1(-1.0f), vf_sqrt(x));
-    if (tier == FAST12)
-        return rsqrt_newton_signed(x, -1.0f);
-    return vf_sub(vf_set1(0.0f), tier_rsqrt(tier, x));
-}
-
 static SC_INLINE vf tier_rcp(int tier, vf x)
 {
     if (tier == ACCURATE)
@@ -181,41 +171,43 @@ static SC_INLINE v3 v3_set1(const float *c)
     return (v3){vf_set1(c[0]), vf_set1(c[1]), vf_set1(c[2])};
 }
 
-/* a / |a| given dd = a·a finite. The zero vector stays zero (dd is taken at least 2^-149). */
-static SC_INLINE v3 v3_unit_dd(int tier, v3 a, vf dd)
+/* 1/|a| given dd = a·a finite, in a fast tier: the zero vector's is finite (dd is taken at
+ * least 2^-149), so that a/|a| stays zero. */
+static SC_INLINE vf inv_length_dd(int tier, vf dd)
 {
-    dd = vf_max(dd, vf_set1(0x1p-149f));
-    if (tier == ACCURATE) {
-        vf len = vf_sqrt(dd);
-        return (v3){vf_div(a.x, len), vf_div(a.y, len), vf_div(a.z, len)};
-    }
-    return v3_scale(a, tier_rsqrt(tier, dd));
+    return tier_rsqrt(tier, vf_max(dd, vf_set1(0x1p-149f)));
 }
 
-/* a / |a| given dd = a·a; lanes whose dd overflowed are scaled by 2^-100 first (rare: a
- * branch, not a cost on every vector). */
-static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
+/* a / |a| given dd = a·a finite. The zero vector stays zero. */
+static SC_INLINE v3 v3_unit_dd(int tier, v3 a, vf dd)
 {
-    vm big = vf_eq(dd, vf_set1(INFINITY));
+    if (tier == ACCURATE) {
+        vf len = vf_sqrt(vf_max(dd, vf_set1(0x1p-149f)));
+        return (v3){vf_div(a.x, len), vf_div(a.y, len), vf_div(a.z, len)};
+    }
+    return v3_scale(a, inv_length_dd(tier, dd));
+}
+
+/* a, its lanes whose dd = a·a overflowed scaled by 2^-100 and dd recomputed there (rare: a
+ * branch, not a cost on every vector). */
+static SC_INLINE v3 v3_unoverflow(v3 a, vf *dd)
+{
+    vm big = vf_eq(*dd, vf_set1(INFINITY));
     if (vm_any(big)) {
         a = v3_scale(a, vf_select(big, vf_set1(0x1p-100f), vf_set1(1.0f)));
-        dd = v3_dot(a, a);
+        *dd = v3_dot(a, a);
     }
+    return a;
+}
+
+/* a / |a| given dd = a·a */
+static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
+{
+    a = v3_unoverflow(a, &dd);
     return v3_unit_dd(tier, a, dd);
 }
 
 static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
-
-/* Two vectors normalized with one test for the rare overflowed lanes of either. */
-static SC_INLINE void v3_normalize2(int tier, v3 *a, v3 *b)
-{
-    vf da = v3_dot(*a, *a), db = v3_dot(*b, *b), inf = vf_set1(INFINITY);
-    if (vm_any(vm_or(vf_eq(da, inf), vf_eq(db, inf)))) {
-        *a = v3_normalize_dd(tier, *a, da), *b = v3_normalize_dd(tier, *b, db);
-        return;
-    }
-    *a = v3_unit_dd(tier, *a, da), *b = v3_unit_dd(tier, *b, db);
-}
 
 static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i, const void *p)
 {
