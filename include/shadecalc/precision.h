@@ -66,13 +66,13 @@ int sc_format_shortest(char *buf, size_t size, double x, sc_prec p);
  * x·2^8). Returns the length (as snprintf). */
 int sc_format_bits(char *buf, size_t size, double x, sc_prec p);
 
-/* A decimal literal (GLSL source, an expression, a number on the command line), read once and
+/* A decimal literal (in GLSL source or an expression), read once and
  * rounded once to each precision. Rounding strtod's binary64 to binary32, binary16 or lowp would
  * round twice: where strtod lands exactly on a midpoint of the narrower format, ties to even can
  * pick the neighbour on the other side of the decimal (7.038531e-26 became 0x1.5c87fcp-84 in
  * highp, not the nearest 0x1.5c87fap-84). `tie` says on which side the decimal lies. */
 typedef struct {
-    double value;    /* the nearest binary64 (what strtod returns) */
+    double value;    /* what strtod returns: the nearest binary64 in the default rounding mode */
     signed char tie; /* sign(decimal - value) where value may be such a midpoint (a finite value
                         of at most 25 significant bits, as all of them are); 0 elsewhere */
 } sc_literal;
