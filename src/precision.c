@@ -2,10 +2,13 @@
  * the shortest decimals are in util/shortest.c. */
 #include "shadecalc/precision.h"
 
+#include <errno.h>
+#include <fenv.h>
 #include <float.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const char *const prec_names[] = {"double", "highp", "mediump", "lowp"};
@@ -136,4 +139,58 @@ int sc_format_bits(char *buf, size_t size, double x, sc_prec p)
         return snprintf(buf, size, "0x%04x", (unsigned)(uint16_t)(int16_t)k);
     }
     }
+}
+
+/* ---- decimal literals, rounded once ---- */
+
+/* Whether v has at most 25 significant bits, as every midpoint between two neighbours of
+ * binary32 (24 bits), binary16 (11) and lowp (multiples of 2^-8 below 2) has: the low 28 of
+ * binary64's 52 fraction bits are zero. (Binary64 subnormals pass too: all round to zero.) */
+static int may_be_a_midpoint(double v)
+{
+    uint64_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    return isfinite(v) && (bits & ((UINT64_C(1) << 28) - 1)) == 0;
+}
+
+/* sign(decimal s - v), v the nearest binary64 to s: s is below v if and only if strtod rounding
+ * downward gives less than v, above it if and only if rounding upward gives more. */
+static signed char side_of(const char *s, double v)
+{
+    int mode = fegetround(), saved = errno;
+    fesetround(FE_DOWNWARD);
+    signed char side = -(strtod(s, NULL) < v);
+    if (side == 0) {
+        fesetround(FE_UPWARD);
+        side = strtod(s, NULL) > v;
+    }
+    fesetround(mode);
+    errno = saved;
+    return side;
+}
+
+sc_literal sc_literal_read(const char *s, char **end)
+{
+    sc_literal lit = {strtod(s, end), 0};
+    if (may_be_a_midpoint(lit.value))
+        lit.tie = side_of(s, lit.value);
+    return lit;
+}
+
+/* Whether v lies halfway between two neighbours of p: an odd multiple of half of p's ULP there
+ * (fmod is exact). Past the largest finite value, the midpoint to the next power of two (65520
+ * in binary16) is one too: it rounds to the finite value or to infinity. */
+static int is_a_midpoint(sc_prec p, double v)
+{
+    double ulp = sc_prec_ulp(p, v);
+    return fmod(fabs(v), ulp) == ulp / 2;
+}
+
+double sc_literal_round(sc_prec p, sc_literal lit)
+{
+    if (lit.tie == 0 || p == SC_DOUBLE || !is_a_midpoint(p, lit.value))
+        return sc_round(p, lit.value);
+    /* the next binary64 on the decimal's side lies, like the decimal, strictly between the
+     * midpoint and that neighbour: it rounds to the neighbour */
+    return sc_round(p, nextafter(lit.value, lit.tie > 0 ? INFINITY : -INFINITY));
 }

@@ -14,6 +14,8 @@
  *   sc_ulp_error            |got - exact| in ULPs of a precision at exact
  *   sc_format_shortest      the shortest decimal that reads back to the same value in a precision
  *   sc_format_bits          the value's bit pattern in a precision, in hexadecimal
+ *   sc_literal_read         a decimal as strtod reads it, plus the side of it the decimal lies on
+ *   sc_literal_round        that literal rounded once, correctly, to a precision
  *
  * Every value here travels as a double: a double holds every binary32, binary16 and lowp value
  * exactly, and rounding a correctly rounded double result of + - * / sqrt to binary32 or
@@ -54,14 +56,35 @@ double sc_prec_ulp(sc_prec p, double x);
  * One NaN or infinity and not the other: +Inf. */
 double sc_ulp_error(sc_prec p, double got, double exact);
 
-/* Writes the shortest %g-style decimal that sc_round(p, strtod(s)) maps back to x ("0.6", "-0",
- * "1e-40", "inf", "-inf", "nan"). Returns the length (as snprintf) or -1 on error. */
+/* Writes the shortest %g-style decimal that reads back to x in p, rounded once (as
+ * sc_literal_round reads it) ("0.6", "-0", "1e-40", "inf", "-inf", "nan"). Returns the length
+ * (as snprintf) or -1 on error. */
 int sc_format_shortest(char *buf, size_t size, double x, sc_prec p);
 
 /* Writes the bit pattern of x (a value of precision p) as hexadecimal: double 0x%016x, highp
  * 0x%08x (binary32), mediump 0x%04x (binary16), lowp 0x%04x (the 16-bit two's complement of
  * x·2^8). Returns the length (as snprintf). */
 int sc_format_bits(char *buf, size_t size, double x, sc_prec p);
+
+/* A decimal literal (in GLSL source or an expression), read once and
+ * rounded once to each precision. Rounding strtod's binary64 to binary32, binary16 or lowp would
+ * round twice: where strtod lands exactly on a midpoint of the narrower format, ties to even can
+ * pick the neighbour on the other side of the decimal (7.038531e-26 became 0x1.5c87fcp-84 in
+ * highp, not the nearest 0x1.5c87fap-84). `tie` says on which side the decimal lies. */
+typedef struct {
+    double value;    /* what strtod returns: the nearest binary64 in the default rounding mode */
+    signed char tie; /* sign(decimal - value) where value may be such a midpoint (a finite value
+                        of at most 25 significant bits, as all of them are); 0 elsewhere */
+} sc_literal;
+
+/* Reads a number as strtod(s, end) does (same syntax, *end and errno). `tie` costs one or two
+ * more strtod calls, under FE_DOWNWARD and FE_UPWARD (which glibc's strtod honours), and only
+ * for a value of at most 25 significant bits: 0.1 or 7.5e-3 need none. */
+sc_literal sc_literal_read(const char *s, char **end);
+
+/* The literal's decimal rounded once, correctly, to p (SC_DOUBLE: its value): sc_round of the
+ * value, except at a midpoint of p with the decimal off it, where the neighbour on its side. */
+double sc_literal_round(sc_prec p, sc_literal lit);
 
 SC_END_DECLS
 

@@ -78,7 +78,8 @@ static sc_value eval_node(const eval_state *st, const expr_node *n, const sc_val
 {
     const sc_value *args = values + n->base;
     switch (n->kind) {
-    case NODE_NUMBER: return (sc_value){SC_FLOAT, {sc_round(st->p, n->num)}};
+    case NODE_NUMBER:
+        return (sc_value){SC_FLOAT, {sc_literal_round(st->p, (sc_literal){n->num, n->tie})}};
     case NODE_INPUT: return rounded(st->p, st->inputs[n->op]);
     case NODE_SLOT: return values[n->op];
     case NODE_NEGATE:

@@ -31,6 +31,7 @@ typedef struct {
     int op;
     int base, count; /* operands in values[base .. base + count), result in values[base] */
     double num;
+    signed char tie; /* NODE_NUMBER: the side of num its decimal lies on (sc_literal) */
     unsigned char swz[4];
     int swz_len;
 } expr_node;

@@ -28,6 +28,7 @@ typedef struct {
     int len;
     int column;
     double num;
+    signed char tie; /* TOK_NUMBER: the side of num its decimal lies on (sc_literal) */
 } token;
 
 typedef struct {
@@ -136,7 +137,9 @@ static void next(parser *ps)
             end = ps->pos + strcspn(ps->pos, "eE") + 1;
             end += *end == '+' || *end == '-';
         }
-        t->num = strtod(ps->pos, NULL);
+        sc_literal lit = sc_literal_read(ps->pos, NULL);
+        t->num = lit.value;
+        t->tie = lit.tie;
         if (*end == 'f' || *end == 'F')
             end++;
         if (is_ident_char((unsigned char)*end) || *end == '.')
@@ -328,7 +331,8 @@ static int parse_primary(parser *ps)
     switch (t.kind) {
     case TOK_NUMBER: {
         next(ps);
-        expr_node node = {.kind = NODE_NUMBER, .type = SC_FLOAT, .column = t.column, .num = t.num};
+        expr_node node = {
+            .kind = NODE_NUMBER, .type = SC_FLOAT, .column = t.column, .num = t.num, .tie = t.tie};
         return add_node(ps, node, 0);
     }
     case TOK_IDENT: return parse_identifier(ps);

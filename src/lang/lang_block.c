@@ -827,7 +827,7 @@ static void fill_constants(block_machine *m, int first_block)
     for (int i = 0; i < pr->n_consts; i++) {
         int reg = pr->consts[i].reg;
         if (first_block) {
-            double v = vm_in_precision(m->p, m->bits, pr->consts[i].kind, pr->consts[i].value);
+            double v = vm_constant_in_precision(m->p, m->bits, &pr->consts[i]);
             double *d = col(m, reg);
             for (int lane = 0; lane < m->cap; lane++)
                 d[lane] = v;

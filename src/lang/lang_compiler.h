@@ -56,6 +56,7 @@ typedef struct {
     int line, column;
     int punct;       /* T_PUNCT: the character or P_ code */
     double num;      /* T_INT, T_UINT (exact), T_FLOAT */
+    signed char tie; /* T_FLOAT: the side of num its decimal lies on (sc_literal); else 0 */
     const char *msg; /* T_BAD: what is wrong */
 } ltoken;
 

@@ -98,16 +98,18 @@ void patch_chain(compiler *cs, int chain, int target)
     }
 }
 
-int const_reg(compiler *cs, sc_kind kind, double value)
+static int add_constant(compiler *cs, sc_kind kind, double value, signed char tie)
 {
     sc_program *pr = cs->prog;
     int reg = alloc_regs(cs, 1);
     if (reg < 0 || sc_expr_grow((void **)&pr->consts, &pr->cap_consts, pr->n_consts + 1,
                                 sizeof *pr->consts) < 0)
         return reg < 0 ? -1 : fail_at(cs, NULL, "out of memory");
-    pr->consts[pr->n_consts++] = (constant){reg, kind, value};
+    pr->consts[pr->n_consts++] = (constant){reg, kind, value, tie};
     return reg;
 }
+
+int const_reg(compiler *cs, sc_kind kind, double value) { return add_constant(cs, kind, value, 0); }
 
 operand value_at(sc_ltype t, int reg)
 {
@@ -579,7 +581,7 @@ static int parse_literal(compiler *cs, operand *out)
     static const sc_kind kinds[] = {
         [T_INT] = SC_KIND_INT, [T_UINT] = SC_KIND_UINT, [T_FLOAT] = SC_KIND_FLOAT};
     sc_kind kind = kinds[cs->tok.kind];
-    int reg = const_reg(cs, kind, cs->tok.num);
+    int reg = add_constant(cs, kind, cs->tok.num, cs->tok.tie); /* a float: rounded once */
     *out = value_at(sc_lt(kind, 1, 1), reg);
     out->is_literal = kind != SC_KIND_FLOAT;
     out->literal = kind == SC_KIND_FLOAT ? 0.0 : sc_int_wrap(kind, 32, cs->tok.num);

@@ -73,11 +73,12 @@ typedef struct {
 } emit_site;
 
 /* A constant: its register and value (a float is rounded to the precision, an integer wrapped
- * to its width, when a run starts). */
+ * to its width, when a run starts; a float literal's decimal is rounded once, with its tie). */
 typedef struct {
     int reg;
     sc_kind kind;
     double value;
+    signed char tie; /* a float literal's sc_literal tie; 0 for other constants */
 } constant;
 
 struct sc_program {

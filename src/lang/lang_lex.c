@@ -138,8 +138,10 @@ static void scan_number(const char *s, ltoken *t)
 {
     int flen = scan_float(s);
     if (flen) {
+        sc_literal lit = sc_literal_read(s, NULL);
         t->kind = T_FLOAT;
-        t->num = strtod(s, NULL);
+        t->num = lit.value;
+        t->tie = lit.tie;
         t->len = flen;
     } else {
         scan_integer(s, t);

@@ -324,12 +324,18 @@ double vm_in_precision(sc_prec p, int bits, sc_kind kind, double x)
     return sc_int_wrap(kind, bits, x);
 }
 
+double vm_constant_in_precision(sc_prec p, int bits, const constant *c)
+{
+    if (c->kind == SC_KIND_FLOAT)
+        return sc_literal_round(p, (sc_literal){c->value, c->tie});
+    return vm_in_precision(p, bits, c->kind, c->value);
+}
+
 static void load_inputs(machine *m, const sc_lvalue *inputs)
 {
     const sc_program *pr = m->prog;
     for (int i = 0; i < pr->n_consts; i++)
-        m->r[pr->consts[i].reg] = vm_in_precision(m->p, m->bits, pr->consts[i].kind,
-                                                  pr->consts[i].value);
+        m->r[pr->consts[i].reg] = vm_constant_in_precision(m->p, m->bits, &pr->consts[i]);
     for (int i = 0; i < pr->n_inputs; i++)
         for (int k = 0; k < sc_ltype_size(pr->input_types[i]); k++)
             m->r[pr->input_regs[i] + k] = vm_in_precision(

@@ -20,6 +20,8 @@ typedef struct {
 /* A constant or input in precision p: a float rounded, an integer wrapped to `bits`, a bool
  * 0 or 1. */
 double vm_in_precision(sc_prec p, int bits, sc_kind kind, double x);
+/* The same for a constant of the program (a float literal rounded once from its decimal). */
+double vm_constant_in_precision(sc_prec p, int bits, const constant *c);
 /* `x op y` of an integer instruction (OP_ADD ... OP_SHR of kind int or uint). */
 double vm_integer_binary(const insn *in, int bits, double x, double y, const vm_report *r);
 /* OP_NEG, OP_BITNOT or OP_NOT of one component. */

@@ -12,13 +12,13 @@
 
 enum { SC_BESIDE_TEXT = 512 };
 
-/* Writes v's exact decimal (every binary64 above 2^-200 has one of at most 200 places) and
+/* Writes v's exact decimal (every binary64 of at least 2^-247 has one of at most 300 places) and
  * moves it in magnitude by 10^-(its places + 30): away from zero by appending zeros and a one,
  * toward zero by lowering its last digit by one (with borrows) and appending nines. v: finite,
- * nonzero, at least 2^-200 in magnitude. */
+ * nonzero, at least 2^-247 in magnitude. */
 static inline void sc_text_beside(char out[SC_BESIDE_TEXT], double v, int away_from_zero)
 {
-    int n = snprintf(out, SC_BESIDE_TEXT, "%.200f", v);
+    int n = snprintf(out, SC_BESIDE_TEXT, "%.300f", v);
     while (out[n - 1] == '0')
         n--;
     out[n] = '\0'; /* "0.5", "65520." */

@@ -440,6 +440,20 @@ static void nested_calls_evaluate_with_derivatives(void **state)
     free(src);
 }
 
+/* A literal is rounded once to the precision: 7.038531e-26, which binary64 puts on a binary32
+ * midpoint, is strtof's binary32 (not the even neighbour a rounding through binary64 gives);
+ * 1.000488281250000000000000000001, which binary64 puts on the binary16 midpoint 1 + 2^-11, is
+ * the binary16 above it, 1 + 2^-10; double keeps strtod's value. */
+static void literals_round_once(void **state)
+{
+    (void)state;
+    const char *tiny = "7.038531e-26", *above = "1.000488281250000000000000000001";
+    assert_true(eval_in(SC_HIGHP, tiny).v[0] == strtof(tiny, NULL));
+    assert_true(eval_in(SC_HIGHP, "-7.038531e-26").v[0] == -strtof(tiny, NULL));
+    assert_true(eval_in(SC_DOUBLE, tiny).v[0] == strtod(tiny, NULL));
+    assert_true(eval_in(SC_MEDIUMP, above).v[0] == 1 + 0x1p-10);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -462,6 +476,7 @@ int main(void)
         cmocka_unit_test(right_leaning_trees_evaluate_to_the_limit),
         cmocka_unit_test(deep_unary_chains_evaluate_or_name_the_limit),
         cmocka_unit_test(nested_calls_evaluate_with_derivatives),
+        cmocka_unit_test(literals_round_once),
     };
     return cmocka_run_group_tests_name("expr", tests, NULL, NULL);
 }

@@ -250,7 +250,7 @@ static void the_exact_checker_rejects_what_is_no_decimal(void **state)
 }
 
 /* 0x1.5c87fap-84 is the binary32 nearest 7.038531e-26; binary64 puts that decimal on the
- * midpoint 0x1.5c87fa8p-84, which ties to the even 0x1.5c87fcp-84. Both checkers read it once,
+ * midpoint 0x1.5c87fbp-84, which ties to the even 0x1.5c87fcp-84. Both checkers read it once,
  * as strtof does: the 7 digits pass, and the 8 digits a reader through binary64 would need
  * are one too many. */
 static void the_checkers_round_a_literal_once(void **state)
