@@ -169,14 +169,17 @@ typedef struct {
 
 /* Adds edge a→b (where `valid`) clipped to z >= 0 to cs; *a2, *b2 its clipped ends. Returns
  * where the clipped edge is a segment. Sutherland–Hodgman's rules: an end with z >= 0 is
- * kept, a strict sign change crosses at t = a_z/(a_z − b_z). */
-static SC_INLINE vm clip_edge(v3 a, v3 b, vm valid, clip_sum *cs, v3 *a2, v3 *b2)
+ * kept, a strict sign change crosses at t = a_z/(a_z − b_z). `on_y_axis`: the edge's z is a
+ * multiple of its x, so that it crosses z = 0 where x = 0 too, which is then set exactly (the
+ * interpolated x, rounded, would turn the crossing's direction when it lies near the origin). */
+static SC_INLINE vm clip_edge(v3 a, v3 b, vm valid, vm on_y_axis, clip_sum *cs, v3 *a2, v3 *b2)
 {
     vf zero = vf_set1(0.0f);
     vm a_out = vf_lt(a.z, zero), b_out = vf_lt(b.z, zero);
     vf den = vf_sub(a.z, b.z);
     vf t = vf_div(a.z, vf_select(vf_eq(den, zero), vf_set1(1.0f), den));
-    v3 x = {vf_fma(t, vf_sub(b.x, a.x), a.x), vf_fma(t, vf_sub(b.y, a.y), a.y), zero};
+    vf cross_x = vf_select(on_y_axis, zero, vf_fma(t, vf_sub(b.x, a.x), a.x));
+    v3 x = {cross_x, vf_fma(t, vf_sub(b.y, a.y), a.y), zero};
     *a2 = v3_select(a_out, x, a);
     *b2 = v3_select(b_out, x, b);
     vm leaves = vm_and(valid, vm_and(vf_le(zero, a.z), b_out));
@@ -257,24 +260,25 @@ static SC_INLINE void ltc_sums(const float *ring, int sides, v3 q, v3 e1, v3 e2,
     vf zero = vf_set1(0.0f);
     v3 origin = {zero, zero, zero}, a2, b2, c2, d2;
     clip_sum first = {zero, origin, origin, vf_lt(vf_set1(1.0f), zero)}, second = first;
-    vm all = vf_le(zero, vf_set1(1.0f));
+    vm all = vf_le(zero, vf_set1(1.0f)), none = vf_lt(vf_set1(1.0f), zero);
     v3 v0 = v3_add(q, v3_add(v3_scale(e1, vf_set1(ring[0])), v3_scale(e2, vf_set1(ring[sides])))),
        a = v0;
     for (int k = 1; k <= sides; k++) {
         v3 b = k == sides ? v0
                           : v3_add(q, v3_add(v3_scale(e1, vf_set1(ring[k])),
                                              v3_scale(e2, vf_set1(ring[sides + k]))));
-        vm seg = clip_edge(a, b, all, &first, &a2, &b2);
+        vm seg = clip_edge(a, b, all, none, &first, &a2, &b2);
         first.sum = vf_add(first.sum, vf_select(seg, edge_term(a2, b2), zero));
-        vm seg2 = clip_edge(ltc_carry(m, a2), ltc_carry(m, b2), seg, &second, &c2, &d2);
+        vm seg2 = clip_edge(ltc_carry(m, a2), ltc_carry(m, b2), seg, none, &second, &c2, &d2);
         second.sum = vf_add(second.sum, vf_select(seg2, edge_term(c2, d2), zero));
         a = b;
     }
-    /* the horizon edge of the first clip, through the second */
+    /* the horizon edge of the first clip, through the second: on it z = 0, so its image under
+     * M⁻¹ has x = m00 x and z = m20 x, which vanish together */
     first.sum = vf_add(first.sum,
                        vf_select(first.crossed, edge_term(first.exit, first.entry), zero));
-    vm seg2 = clip_edge(ltc_carry(m, first.exit), ltc_carry(m, first.entry), first.crossed, &second,
-                        &c2, &d2);
+    vm seg2 = clip_edge(ltc_carry(m, first.exit), ltc_carry(m, first.entry), first.crossed, all,
+                        &second, &c2, &d2);
     second.sum = vf_add(second.sum, vf_select(seg2, edge_term(c2, d2), zero));
     second.sum = vf_add(second.sum,
                         vf_select(second.crossed, edge_term(second.exit, second.entry), zero));

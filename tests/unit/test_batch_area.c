@@ -98,6 +98,25 @@ static void check_random(const char *kernel, const one_light *s, const char *wha
     batch_buffers_release(&b);
 }
 
+/* A point of the rect row's scene whose first clip's horizon chord passes within 5e-6 of the
+ * origin of the view frame: the carried chord crosses its own horizon at x = 0, and the crossing
+ * interpolated with an FMA (x -6.7e-8 beside y -4.7e-6) turned by 0.014 rad, 3.5 times the
+ * bound on avx2 and avx512 before the crossing was put on the y axis exactly. */
+static void rect_chord_near_origin(void **state)
+{
+    (void)state;
+    static const float input[9] = {-0x1.e24ab8p-7f, -0x1.41e1c6p-4f, -0x1.14b9dep-4f,
+                                   0x1.f2db44p-2f,  -0x1.46bb5cp+0f, -0x1.4dfaeep-2f,
+                                   -0x1.383d1p-3f,  0x1.6a699ep+0f,  -0x1.8411d2p-4f};
+    batch_buffers b;
+    batch_buffers_alloc(&b, 17, &sc_batch_test_area_rect);
+    for (size_t i = 0; i < b.args.n; i++)
+        for (int j = 0; j < 9; j++)
+            b.in[j][i] = input[j];
+    check_kernel("area_rect", &b, "horizon chord near the origin");
+    batch_buffers_release(&b);
+}
+
 /* The representative point with lambert and both forms of blinn-phong; LTC with lambert and
  * GGX without Fresnel (F = 1), and a two-sided disk and one-sided rect. */
 static void other_brdfs(void **state)
@@ -405,11 +424,9 @@ static void plans_shade_as_the_kernels(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(plans_accept_and_refuse),
-        cmocka_unit_test(plans_shade_as_the_kernels),
-        cmocka_unit_test(zero_size_gives_zero),
-        cmocka_unit_test(edge_cases),
-        cmocka_unit_test(other_brdfs),
+        cmocka_unit_test(plans_accept_and_refuse), cmocka_unit_test(plans_shade_as_the_kernels),
+        cmocka_unit_test(zero_size_gives_zero),    cmocka_unit_test(edge_cases),
+        cmocka_unit_test(rect_chord_near_origin),  cmocka_unit_test(other_brdfs),
     };
     return cmocka_run_group_tests_name("batch_area", tests, NULL, NULL);
 }
