@@ -739,8 +739,8 @@ static void shade_grazing_mirror_within_bounds(void **state)
         char why[256];
         sc_batch_example_scene(lobes[k].kind, 1, 0, 0, lights, &scene);
         lobes[k].change(&scene.model.brdf, lobes[k].x);
-        sc_batch_plan *plan =
-            sc_batch_plan_compile(&scene, "accurate", SC_ISA_SCALAR, why, sizeof why);
+        sc_batch_plan *plan = sc_batch_plan_compile(&scene, "accurate", SC_ISA_SCALAR, why,
+                                                    sizeof why);
         if (!plan)
             fail_msg("%s: %s", lobes[k].what, why);
         batch_buffers b;
