@@ -292,7 +292,7 @@ static const float log2_c8_lo = (float)(1.4426950035679822 - (double)1.442695003
 /* log2_fast with log2_c8, its last step split: e + (c·t + t·(t·p(t) + c_lo)), c = the constant
  * term in float, p = the other terms. The rounding of q(t) to float, amplified by up to 1/ln2
  * where t·q(t) ≈ 1/2, does not enter the sum: exhaustively over [1/4, 4), 1.36 ulp instead of
- * 2.10 ulp. */
+ * 2.10 ulp with the FMA (2.27 instead of 2.15 ulp without: SSE4.1, scalar). */
 static inline vf log2_u4(vf x)
 {
     vf m, e;
