@@ -522,8 +522,8 @@ static void log2_u4_with_fma_is_within_1_5_ulp_around_1(void **state)
             for (uint32_t i = 0; i < CHUNK; i++) {
                 double err = sc_ulp_error(SC_HIGHP, out[i], log2((double)in[i]));
                 if (err > 1.5)
-                    fail_msg("log2 u4 %s at %a: %a, %.3g ulp", sc_isa_name(e->isa),
-                             (double)in[i], (double)out[i], err);
+                    fail_msg("log2 u4 %s at %a: %a, %.3g ulp", sc_isa_name(e->isa), (double)in[i],
+                             (double)out[i], err);
             }
         }
     }
