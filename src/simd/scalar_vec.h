@@ -86,14 +86,4 @@ static inline vf vf_rsqrt_est(vf x)
 /* the reciprocal: rcpps's 2^-12 estimate is a hardware detail; the portable lanes divide */
 static inline vf vf_rcp_est(vf x) { return vf_set1(1.0f) / x; }
 
-/* f on each lane: the scalar built-ins, where the SIMD instruction sets have double lanes */
-static inline vf vf_lanes1(vf x, float (*f)(float))
-{
-    return (vf){f(x[0]), f(x[1]), f(x[2]), f(x[3])};
-}
-static inline vf vf_lanes2(vf x, vf y, float (*f)(float, float))
-{
-    return (vf){f(x[0], y[0]), f(x[1], y[1]), f(x[2], y[2]), f(x[3], y[3])};
-}
-
 #endif
