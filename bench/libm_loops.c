@@ -101,31 +101,64 @@ static void length_arrays(VEC3_PARAMS(x, y, z), float *restrict out, size_t n)
 }
 static void loop_length(const sc_batch_args *a) { length_arrays(VEC3_IN(a), a->out[0], a->n); }
 
-/* ---- the shading equation as a user writes it: float, sqrtf, powf ---- */
+/* ---- vec3 values of the per-element functions below ----
+ * The per-element functions are inlined into the loops (as a user who checked
+ * -fopt-info-vec would mark them): a call in the body keeps the loop scalar. */
+#if defined(__GNUC__)
+#define LOOP_INLINE inline __attribute__((always_inline))
+#else
+#define LOOP_INLINE inline
+#endif
+
+typedef struct {
+    float x, y, z;
+} f3;
+
+static LOOP_INLINE f3 f3_of(const float *v) { return (f3){v[0], v[1], v[2]}; }
+static LOOP_INLINE f3 f3_sub(f3 a, f3 b) { return (f3){a.x - b.x, a.y - b.y, a.z - b.z}; }
+static LOOP_INLINE f3 f3_axpy(float t, f3 a, f3 b)
+{
+    return (f3){t * a.x + b.x, t * a.y + b.y, t * a.z + b.z};
+}
+static LOOP_INLINE float f3_dot(f3 a, f3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static LOOP_INLINE f3 f3_cross(f3 a, f3 b)
+{
+    return (f3){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+/* a / |a|; the zero vector stays zero */
+static LOOP_INLINE f3 f3_unit(f3 a)
+{
+    float d = f3_dot(a, a), k = d > 0.0f ? 1.0f / sqrtf(d) : 0.0f;
+    return (f3){a.x * k, a.y * k, a.z * k};
+}
+static LOOP_INLINE f3 f3_pick(int c, f3 a, f3 b)
+{
+    return (f3){c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
+}
+
+/* ---- the shading equation as a user writes it: float, sqrtf, powf ----
+ * What is uniform over the scene (the BRDF, each light's kind and spot kind, the number of
+ * lights) is decided outside the element loops. The elements go in L1-sized chunks: one loop
+ * normalises the chunk's n and v into scratch arrays and sets the outputs to the ambient term,
+ * then one loop per light, its body specialised for that light and the BRDF, adds the light's
+ * term. The bodies are branch-free (selects, every operand computed). */
 
 /* GGX D V = α²/(π d²) / (2 (n·l √(n·v² (1 − α²) + α²) + n·v √(n·l² (1 − α²) + α²))) */
-static inline float ggx_dv(float a2, float nh, float nl, float nv)
+static LOOP_INLINE float ggx_dv(float a2, float nh, float nl, float nv)
 {
     float d = nh * nh * (a2 - 1.0f) + 1.0f;
     return a2 / (SC_PI_F * d * d) * 0.5f /
            (nl * sqrtf(nv * nv * (1.0f - a2) + a2) + nv * sqrtf(nl * nl * (1.0f - a2) + a2));
 }
 
-static float dot3(const float *a, const float *b)
+/* Schlick's (1 − v·h)⁵ */
+static LOOP_INLINE float schlick_m5(f3 v, f3 h)
 {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void unit(float *v)
-{
-    float len = sqrtf(dot3(v, v));
-    if (len > 0.0f)
-        for (int c = 0; c < 3; c++)
-            v[c] /= len;
+    return powf(1.0f - fmaxf(f3_dot(v, h), 0.0f), 5.0f);
 }
 
 /* The scene in float, as a user's program keeps it: lights, and the BRDF (lambert, normalized
- * blinn-phong or GGX: the bench's scenes). */
+ * blinn-phong or GGX: the bench's scenes). An OpenGL spot of cutoff 180° is a point light. */
 typedef struct {
     int kind, spot; /* sc_light_kind, sc_spot_kind */
     float dir[3], pos[3], color[3], cos_outer, cos_inner, exponent;
@@ -134,7 +167,7 @@ typedef struct {
 typedef struct {
     user_light lights[SC_BATCH_MAX_LIGHTS];
     int n_lights, brdf; /* sc_brdf_kind */
-    float diff[3], spec[3], amb_term[3], m, alpha, f0;
+    float diff_pi[3], spec[3], amb_term[3], m, blinn_norm, a2, f0;
 } user_scene;
 
 static void user_scene_of(const sc_scene *s, user_scene *u)
@@ -146,99 +179,149 @@ static void user_scene_of(const sc_scene *s, user_scene *u)
     for (int k = 0; k < s->n_lights; k++) {
         const sc_light *l = &s->lights[k];
         user_light *ul = &u->lights[k];
-        ul->kind = (int)l->kind;
+        int uncut = l->spot.kind == SC_SPOT_OPENGL && l->spot.cutoff == 180.0;
+        ul->kind = l->kind == SC_LIGHT_SPOT && uncut ? SC_LIGHT_POINT : (int)l->kind;
         ul->spot = (int)l->spot.kind;
         for (int c = 0; c < 3; c++) {
             ul->dir[c] = (float)l->dir[c];
             ul->pos[c] = (float)l->pos[c];
             ul->color[c] = (float)l->intensity[c];
         }
-        ul->cos_outer = l->spot.kind == SC_SPOT_OPENGL
-                            ? (l->spot.cutoff == 180.0 ? -2.0f : cosf((float)l->spot.cutoff * deg))
-                            : cosf((float)l->spot.outer * deg);
+        ul->cos_outer = cosf(
+            (float)(l->spot.kind == SC_SPOT_OPENGL ? l->spot.cutoff : l->spot.outer) * deg);
         ul->cos_inner = cosf((float)l->spot.inner * deg);
         ul->exponent = (float)l->spot.exponent;
     }
     for (int c = 0; c < 3; c++) {
-        u->diff[c] = (float)b->diff[c];
+        u->diff_pi[c] = (float)b->diff[c] / SC_PI_F;
         u->spec[c] = (float)b->spec[c];
         u->amb_term[c] = (float)(b->amb[c] * s->ambient[c]);
     }
     u->m = (float)b->m;
-    u->alpha = (float)b->ax;
+    u->blinn_norm = (u->m + 8.0f) / (8.0f * SC_PI_F);
+    u->a2 = (float)(b->ax * b->ax);
     u->f0 = (float)b->f0[0];
 }
 
-static float specular(const user_scene *s, const float *n, const float *v, const float *l, float nl,
-                      float nv)
+/* The spot factor at cos_s = −l·d, spot a constant (sc_spot_kind) */
+static LOOP_INLINE float spot_factor(const user_light *lt, int spot, float cos_s)
 {
-    float h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
-    unit(h);
-    float nh = fmaxf(dot3(n, h), 0.0f);
-    if (s->brdf == SC_BRDF_BLINN_PHONG)
-        return (s->m + 8.0f) / (8.0f * SC_PI_F) * powf(nh, s->m);
-    float F = s->f0 + (1.0f - s->f0) * powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f);
-    return ggx_dv(s->alpha * s->alpha, nh, nl, nv) * F;
-}
-
-static float spot(const user_light *lt, const float *l)
-{
-    float cos_s = -dot3(l, lt->dir);
-    if (lt->spot == SC_SPOT_OPENGL)
-        return lt->cos_outer <= -1.0f   ? 1.0f
-               : cos_s >= lt->cos_outer ? powf(cos_s, lt->exponent)
-                                        : 0.0f;
-    if (cos_s >= lt->cos_inner)
-        return 1.0f;
-    if (cos_s <= lt->cos_outer)
-        return 0.0f;
+    if (spot == SC_SPOT_OPENGL)
+        return cos_s >= lt->cos_outer ? powf(cos_s, lt->exponent) : 0.0f;
     float t = (cos_s - lt->cos_outer) / (lt->cos_inner - lt->cos_outer);
-    return lt->spot == SC_SPOT_SMOOTHSTEP ? t * t * (3.0f - 2.0f * t) : powf(t, lt->exponent);
+    float f = spot == SC_SPOT_SMOOTHSTEP ? t * t * (3.0f - 2.0f * t) : powf(t, lt->exponent);
+    return cos_s >= lt->cos_inner ? 1.0f : cos_s <= lt->cos_outer ? 0.0f : f;
 }
 
-static void shade_one(const user_scene *s, float n[3], float v[3], const float p[3], float *rgb)
+/* The unit direction to the light from p; *e its falloff × spot factor. kind, spot: constants */
+static LOOP_INLINE f3 to_light(const user_light *lt, int kind, int spot, f3 p, float *e)
 {
-    unit(n);
-    unit(v);
-    float nv = dot3(n, v);
-    for (int c = 0; c < 3; c++)
-        rgb[c] = s->amb_term[c];
-    for (int k = 0; k < s->n_lights; k++) {
-        const user_light *lt = &s->lights[k];
-        float l[3], e = 1.0f;
-        memcpy(l, lt->dir, sizeof l);
-        if (lt->kind != SC_LIGHT_DIRECTIONAL) {
-            for (int c = 0; c < 3; c++)
-                l[c] = lt->pos[c] - p[c];
-            e = 1.0f / fmaxf(dot3(l, l), 1e-4f);
-            unit(l);
-            if (lt->kind == SC_LIGHT_SPOT)
-                e *= spot(lt, l);
-        }
-        float nl = dot3(n, l);
-        if (nl <= 0.0f || nv <= 0.0f)
-            continue;
-        float sp = s->brdf == SC_BRDF_LAMBERT ? 0.0f : specular(s, n, v, l, nl, nv);
-        for (int c = 0; c < 3; c++)
-            rgb[c] += (s->diff[c] / SC_PI_F + s->spec[c] * sp) * lt->color[c] * e * nl;
+    if (kind == SC_LIGHT_DIRECTIONAL) {
+        *e = 1.0f;
+        return f3_of(lt->dir);
+    }
+    f3 d = f3_sub(f3_of(lt->pos), p), l = f3_unit(d);
+    float falloff = 1.0f / fmaxf(f3_dot(d, d), 1e-4f);
+    *e = kind == SC_LIGHT_SPOT ? falloff * spot_factor(lt, spot, -f3_dot(l, f3_of(lt->dir)))
+                               : falloff;
+    return l;
+}
+
+/* (c_diff/π + c_spec f_s) E e cos θ_i of one light at unit n, v; 0 where unlit. brdf: constant */
+static LOOP_INLINE f3 light_term(const user_scene *s, const user_light *lt, int brdf, f3 n, f3 v,
+                                 f3 l, float e)
+{
+    float nl = f3_dot(n, l), nv = f3_dot(n, v), sp = 0.0f;
+    if (brdf != SC_BRDF_LAMBERT) {
+        f3 h = f3_unit(f3_axpy(1.0f, l, v));
+        float nh = fmaxf(f3_dot(n, h), 0.0f);
+        sp = brdf == SC_BRDF_BLINN_PHONG
+                 ? s->blinn_norm * powf(nh, s->m)
+                 : ggx_dv(s->a2, nh, nl, nv) * (s->f0 + (1.0f - s->f0) * schlick_m5(v, h));
+    }
+    float w = e * nl;
+    f3 t = {(s->diff_pi[0] + s->spec[0] * sp) * lt->color[0] * w,
+            (s->diff_pi[1] + s->spec[1] * sp) * lt->color[1] * w,
+            (s->diff_pi[2] + s->spec[2] * sp) * lt->color[2] * w};
+    return f3_pick(fminf(nl, nv) > 0.0f, t, (f3){0.0f, 0.0f, 0.0f});
+}
+
+/* out += light lt's term over n elements of unit n and v; kind, spot, brdf: constants */
+static LOOP_INLINE void light_loop(const user_scene *s, const user_light *lt, int kind, int spot,
+                                   int brdf, VEC3_PARAMS(nx, ny, nz), VEC3_PARAMS(vx, vy, vz),
+                                   VEC3_PARAMS(px, py, pz), VEC3_OUTS, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        f3 nn = {nx[i], ny[i], nz[i]}, vv = {vx[i], vy[i], vz[i]};
+        float e;
+        f3 l = to_light(lt, kind, spot, (f3){px[i], py[i], pz[i]}, &e);
+        f3 t = light_term(s, lt, brdf, nn, vv, l, e);
+        ox[i] += t.x;
+        oy[i] += t.y;
+        oz[i] += t.z;
     }
 }
+
+#define SHADE_PARAMS                                                                               \
+    VEC3_PARAMS(nx, ny, nz), VEC3_PARAMS(vx, vy, vz), VEC3_PARAMS(px, py, pz), VEC3_OUTS, size_t n
+#define SHADE_ARGS nx, ny, nz, vx, vy, vz, px, py, pz, ox, oy, oz, n
+
+/* light_loop of lt's kind and spot kind, brdf a constant */
+static LOOP_INLINE void light_loop_of(const user_scene *s, const user_light *lt, int brdf,
+                                      SHADE_PARAMS)
+{
+    if (lt->kind == SC_LIGHT_DIRECTIONAL)
+        light_loop(s, lt, SC_LIGHT_DIRECTIONAL, 0, brdf, SHADE_ARGS);
+    else if (lt->kind == SC_LIGHT_POINT)
+        light_loop(s, lt, SC_LIGHT_POINT, 0, brdf, SHADE_ARGS);
+    else if (lt->spot == SC_SPOT_OPENGL)
+        light_loop(s, lt, SC_LIGHT_SPOT, SC_SPOT_OPENGL, brdf, SHADE_ARGS);
+    else if (lt->spot == SC_SPOT_DIRECTX)
+        light_loop(s, lt, SC_LIGHT_SPOT, SC_SPOT_DIRECTX, brdf, SHADE_ARGS);
+    else
+        light_loop(s, lt, SC_LIGHT_SPOT, SC_SPOT_SMOOTHSTEP, brdf, SHADE_ARGS);
+}
+
+/* out += light lt's term over n elements, in the loop of the scene's BRDF and lt's kind */
+static void add_light(const user_scene *restrict s, const user_light *restrict lt, SHADE_PARAMS)
+{
+    if (s->brdf == SC_BRDF_LAMBERT)
+        light_loop_of(s, lt, SC_BRDF_LAMBERT, SHADE_ARGS);
+    else if (s->brdf == SC_BRDF_BLINN_PHONG)
+        light_loop_of(s, lt, SC_BRDF_BLINN_PHONG, SHADE_ARGS);
+    else
+        light_loop_of(s, lt, SC_BRDF_COOK_TORRANCE, SHADE_ARGS);
+}
+
+static void fill3(const float *v, VEC3_OUTS, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        ox[i] = v[0];
+        oy[i] = v[1];
+        oz[i] = v[2];
+    }
+}
+
+/* Elements per chunk: its 12 arrays (24 KB) stay in L1 across the lights' loops */
+enum { SHADE_CHUNK = 512 };
 
 /* params: the scene's plan (batch.h), whose double scene the loop copies to floats first */
 static void loop_shade(const sc_batch_args *a)
 {
     static _Thread_local user_scene s;
+    static _Thread_local float unit[6][SHADE_CHUNK]; /* n and v of the chunk, normalised */
     user_scene_of(sc_batch_plan_scene(a->params), &s);
-    for (size_t i = 0; i < a->n; i++) {
-        float n[3], v[3], p[3], rgb[3];
-        for (int c = 0; c < 3; c++) {
-            n[c] = a->in[c][i];
-            v[c] = a->in[3 + c][i];
-            p[c] = a->in[6 + c][i];
-        }
-        shade_one(&s, n, v, p, rgb);
-        for (int c = 0; c < 3; c++)
-            a->out[c][i] = rgb[c];
+    for (size_t i = 0; i < a->n; i += SHADE_CHUNK) {
+        size_t n = a->n - i < SHADE_CHUNK ? a->n - i : SHADE_CHUNK;
+        const float *p[3] = {a->in[6] + i, a->in[7] + i, a->in[8] + i};
+        float *out[3] = {a->out[0] + i, a->out[1] + i, a->out[2] + i};
+        for (int j = 0; j < 2; j++)
+            normalize_arrays(a->in[3 * j] + i, a->in[3 * j + 1] + i, a->in[3 * j + 2] + i,
+                             unit[3 * j], unit[3 * j + 1], unit[3 * j + 2], n);
+        fill3(s.amb_term, out[0], out[1], out[2], n);
+        for (int k = 0; k < s.n_lights; k++)
+            add_light(&s, &s.lights[k], unit[0], unit[1], unit[2], unit[3], unit[4], unit[5], p[0],
+                      p[1], p[2], out[0], out[1], out[2], n);
     }
 }
 
@@ -331,36 +414,41 @@ static void spot_loop(const sc_batch_args *a, int smooth)
 static void loop_spot_directx(const sc_batch_args *a) { spot_loop(a, 0); }
 static void loop_spot_smoothstep(const sc_batch_args *a) { spot_loop(a, 1); }
 
-/* f (or f cos θ_i) of cook-torrance GGX, Smith height-correlated, Schlick per channel */
+/* f of cook-torrance GGX, Smith height-correlated, Schlick per channel; b: sc_brdf_uniforms-like
+ * floats of the row's BRDF (kd = c_diff/π) */
+typedef struct {
+    float a2, f0[3], kd[3], spec[3];
+} user_ggx;
+
+static void brdf_arrays(const user_ggx *restrict b, VEC3_PARAMS(lx, ly, lz),
+                        VEC3_PARAMS(vx, vy, vz), VEC3_PARAMS(nx, ny, nz), VEC3_OUTS, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        f3 l = f3_unit((f3){lx[i], ly[i], lz[i]}), v = f3_unit((f3){vx[i], vy[i], vz[i]});
+        f3 nn = f3_unit((f3){nx[i], ny[i], nz[i]}), h = f3_unit(f3_axpy(1.0f, l, v));
+        float nl = f3_dot(nn, l), nv = f3_dot(nn, v);
+        float dv = ggx_dv(b->a2, fmaxf(f3_dot(nn, h), 0.0f), nl, nv), m5 = schlick_m5(v, h);
+        f3 f = {b->kd[0] + b->spec[0] * dv * (b->f0[0] + (1.0f - b->f0[0]) * m5),
+                b->kd[1] + b->spec[1] * dv * (b->f0[1] + (1.0f - b->f0[1]) * m5),
+                b->kd[2] + b->spec[2] * dv * (b->f0[2] + (1.0f - b->f0[2]) * m5)};
+        f = f3_pick(fminf(nl, nv) > 0.0f, f, (f3){0.0f, 0.0f, 0.0f});
+        ox[i] = f.x;
+        oy[i] = f.y;
+        oz[i] = f.z;
+    }
+}
+
 static void loop_brdf(const sc_batch_args *a)
 {
     const sc_brdf *p = a->params;
-    float a2 = (float)(p->ax * p->ax), f0[3], diff[3], spec[3];
+    user_ggx b = {.a2 = (float)(p->ax * p->ax)};
     for (int c = 0; c < 3; c++) {
-        f0[c] = (float)p->f0[c];
-        diff[c] = (float)p->diff[c];
-        spec[c] = (float)p->spec[c];
+        b.f0[c] = (float)p->f0[c];
+        b.kd[c] = (float)p->diff[c] / SC_PI_F;
+        b.spec[c] = (float)p->spec[c];
     }
-    for (size_t i = 0; i < a->n; i++) {
-        float l[3], v[3], n[3];
-        for (int c = 0; c < 3; c++) {
-            l[c] = a->in[c][i];
-            v[c] = a->in[3 + c][i];
-            n[c] = a->in[6 + c][i];
-        }
-        unit(l);
-        unit(v);
-        unit(n);
-        float nl = dot3(n, l), nv = dot3(n, v), h[3] = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
-        unit(h);
-        float nh = fmaxf(dot3(n, h), 0.0f), DV = ggx_dv(a2, nh, nl, nv);
-        float m5 = powf(1.0f - fmaxf(dot3(v, h), 0.0f), 5.0f);
-        for (int c = 0; c < 3; c++) {
-            float F = f0[c] + (1.0f - f0[c]) * m5;
-            float f = diff[c] / SC_PI_F + spec[c] * DV * F;
-            a->out[c][i] = ((nl > 0.0f) & (nv > 0.0f)) ? f : 0.0f;
-        }
-    }
+    brdf_arrays(&b, VEC3_IN(a), a->in[3], a->in[4], a->in[5], a->in[6], a->in[7], a->in[8],
+                VEC3_OUT(a), a->n);
 }
 
 /* ---- the area lights' approximations (area_* kernels) as a user writes them ----
@@ -370,39 +458,6 @@ static void loop_brdf(const sc_batch_args *a)
  * the kernels' own (sc_uniforms_shade: the light's geometry in float, the LTC table at the
  * scene's α), computed once per call as the kernels do. Branches are selects, every operand
  * computed: the loop bodies have no short-circuit. */
-
-/* The per-element functions are inlined into the loops (as a user who checked
- * -fopt-info-vec would mark them): a call in the body keeps the loop scalar. */
-#if defined(__GNUC__)
-#define LOOP_INLINE inline __attribute__((always_inline))
-#else
-#define LOOP_INLINE inline
-#endif
-
-typedef struct {
-    float x, y, z;
-} f3;
-
-static LOOP_INLINE f3 f3_of(const float *v) { return (f3){v[0], v[1], v[2]}; }
-static LOOP_INLINE f3 f3_sub(f3 a, f3 b) { return (f3){a.x - b.x, a.y - b.y, a.z - b.z}; }
-static LOOP_INLINE f3 f3_axpy(float t, f3 a, f3 b)
-{
-    return (f3){t * a.x + b.x, t * a.y + b.y, t * a.z + b.z};
-}
-static LOOP_INLINE float f3_dot(f3 a, f3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static LOOP_INLINE f3 f3_cross(f3 a, f3 b)
-{
-    return (f3){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-static LOOP_INLINE f3 f3_unit(f3 a)
-{
-    float k = 1.0f / sqrtf(f3_dot(a, a));
-    return (f3){a.x * k, a.y * k, a.z * k};
-}
-static LOOP_INLINE f3 f3_pick(int c, f3 a, f3 b)
-{
-    return (f3){c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
-}
 
 /* Snyder's sphere irradiance at cos θ = ct, distance d > R (light/area.c) */
 static LOOP_INLINE float sphere_irradiance(float ct, float d, float R)
