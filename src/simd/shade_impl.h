@@ -21,31 +21,77 @@ enum { MAX_IN = 9, MAX_OUT = 3 };
  * constant j: straight-line code, no copies. params is args.params (the light kernels). */
 typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i, const void *params);
 
+/* Elements of a block that the driver runs through buffers: its outputs stay in L1 until they
+ * are stored or streamed out. */
+enum { BLOCK = 8 * VW };
+
+/* Elements [start, start + count), count <= BLOCK, computed into a buffer: inputs read in place
+ * for a whole block, else through copies padded with 1 (a harmless input for every kernel);
+ * outputs streamed with non-temporal stores (a whole block at an aligned output) or copied. */
+static SC_INLINE void run_buffered(const sc_batch_args *a, int k, int m, lane_n_fn f, size_t start,
+                                   size_t count, int stream)
+{
+    float pad[MAX_IN][BLOCK], buf[MAX_OUT][BLOCK];
+    const float *in[MAX_IN] = {0};
+    float *out[MAX_OUT];
+    for (int j = 0; j < k; j++) {
+        in[j] = a->in[j] + start;
+        if (count < BLOCK) {
+            for (size_t e = 0; e < BLOCK; e++)
+                pad[j][e] = e < count ? in[j][e] : 1.0f;
+            in[j] = pad[j];
+        }
+    }
+    for (int j = 0; j < m; j++)
+        out[j] = buf[j];
+    for (size_t v = 0; v < count; v += VW)
+        f(in, out, v, a->params);
+    for (int j = 0; j < m; j++) {
+        if (stream)
+            for (size_t v = 0; v < BLOCK; v += VW)
+                vf_stream(a->out[j] + start + v, vf_loadu(buf[j] + v));
+        else
+            memcpy(a->out[j] + start, buf[j], count * sizeof(float));
+    }
+}
+
+/* 1 if the outputs are large enough to stream (STREAM_MIN) and share one alignment, whose first
+ * `peel` elements come before an aligned vector. */
+static SC_INLINE int outputs_stream(const sc_batch_args *a, int m, size_t *peel)
+{
+    size_t bytes = VW * sizeof(float), misalign = (uintptr_t)a->out[0] % bytes;
+    if (a->n < STREAM_MIN || misalign % sizeof(float) != 0)
+        return 0;
+    for (int j = 1; j < m; j++)
+        if ((uintptr_t)a->out[j] % bytes != misalign)
+            return 0;
+    *peel = misalign ? (bytes - misalign) / sizeof(float) : 0;
+    return 1;
+}
+
+/* Small arrays: the lane stores in place, vector by vector, and the tail goes through buffers.
+ * Streaming arrays: every element goes through buffers, whole aligned blocks streamed out with
+ * non-temporal stores, which save the read of each output line that an ordinary store costs (a
+ * fourth of shade's traffic). One call site of the lane for each path keeps the code small. */
 static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 {
-    /* local copies of the pointers and n: the compiler keeps them in registers, where through
-     * `a` it reloaded them after every store (the stores might have changed them) */
+    size_t i = 0, n = a->n, peel = 0;
+    int stream = outputs_stream(a, m, &peel);
+    /* local copies of the pointers: the compiler keeps them in registers, where through `a` it
+     * reloaded them after every store (the stores might have changed them) */
     const float *ins[MAX_IN];
     float *outs[MAX_OUT];
     memcpy(ins, a->in, sizeof ins);
     memcpy(outs, a->out, sizeof outs);
-    size_t i = 0, n = a->n;
-    for (; i + VW <= n; i += VW)
+    for (; !stream && i + VW <= n; i += VW)
         f(ins, outs, i, a->params);
-    if (i == a->n)
-        return;
-    float tail_in[MAX_IN][VW], tail_out[MAX_OUT][VW]; /* the tail, padded with 1 */
-    const float *in[MAX_IN] = {0};
-    float *out[MAX_OUT];
-    for (int j = 0; j < k; j++) {
-        vf_storeu(tail_in[j], load_partial(a->in[j] + i, a->n - i));
-        in[j] = tail_in[j];
+    while (i < n) {
+        size_t count = i == 0 && peel ? peel : n - i < BLOCK ? n - i : BLOCK;
+        run_buffered(a, k, m, f, i, count, stream && count == BLOCK);
+        i += count;
     }
-    for (int j = 0; j < m; j++)
-        out[j] = tail_out[j];
-    f(in, out, 0, a->params);
-    for (int j = 0; j < m; j++)
-        store_partial(a->out[j] + i, vf_loadu(tail_out[j]), a->n - i);
+    if (stream)
+        vf_stream_fence();
 }
 
 #define BATCH_N(name, k, m, lane)                                                                  \

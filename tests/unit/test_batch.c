@@ -427,43 +427,91 @@ static void simd_matches_scalar(void **state)
     }
 }
 
-/* One-input kernels stream outputs of 2^21 elements or more with non-temporal stores, after
- * peeling to an aligned output (one driver, run1, for all of them: exp2 u4 exercises it on each
- * instruction set): the same bits as the ordinary stores of shorter calls, at an unaligned
- * start and with a tail. */
+/* Past 2^21 elements the drivers stream their outputs with non-temporal stores, after peeling
+ * to an aligned output vector: run1 (one input: exp2 u4) and run_n (vec3 kernels and shade,
+ * whose outputs go through buffers block by block). Each must give the same bits as the
+ * ordinary stores of shorter calls, at an unaligned start, with a tail, and with outputs of
+ * different alignments (which do not stream). */
+enum { STREAM_N = (1 << 21) + 13, STREAM_CHUNK = 4096 };
+
+/* Arrays of STREAM_N + 3 floats, 64-byte aligned; an element of each starts `shift` floats in. */
+typedef struct {
+    float *in[9], *whole[3], *chunked[3];
+} stream_arrays;
+
+static float *aligned_floats(void)
+{
+    float *p = aligned_alloc(64, ((STREAM_N + 3) * sizeof(float) + 63) / 64 * 64);
+    assert_non_null(p);
+    return p;
+}
+
+static void run_whole_and_chunked(const sc_batch_entry *e, const void *params, stream_arrays *s,
+                                  const size_t *out_shift)
+{
+    sc_batch_args whole = {.n = STREAM_N, .params = params}, part = whole;
+    for (int j = 0; j < e->n_in; j++)
+        whole.in[j] = s->in[j] + 1;
+    for (int j = 0; j < e->n_out; j++)
+        whole.out[j] = s->whole[j] + out_shift[j];
+    e->fn(&whole);
+    for (size_t start = 0; start < STREAM_N; start += STREAM_CHUNK) {
+        part.n = STREAM_N - start < STREAM_CHUNK ? STREAM_N - start : STREAM_CHUNK;
+        for (int j = 0; j < e->n_in; j++)
+            part.in[j] = s->in[j] + 1 + start;
+        for (int j = 0; j < e->n_out; j++)
+            part.out[j] = s->chunked[j] + out_shift[j] + start;
+        e->fn(&part);
+    }
+    for (int j = 0; j < e->n_out; j++)
+        for (size_t k = 0; k < STREAM_N; k++)
+            if (!same_value(s->whole[j][k + out_shift[j]], s->chunked[j][k + out_shift[j]]))
+                fail_msg("%s %s %s: output %d element %zu streamed %a, stored %a", e->kernel,
+                         e->tier, sc_isa_name(e->isa), j, k, (double)s->whole[j][k + out_shift[j]],
+                         (double)s->chunked[j][k + out_shift[j]]);
+}
+
+static void streamed_matches_stored(const char *kernel, const char *tier)
+{
+    const sc_batch_entry *domain = sc_batch_find(kernel, tier, SC_ISA_SCALAR);
+    assert_non_null(domain);
+    stream_arrays s;
+    for (int j = 0; j < 9; j++)
+        s.in[j] = j < domain->n_in ? aligned_floats() : NULL;
+    for (int j = 0; j < 3; j++) {
+        s.whole[j] = j < domain->n_out ? aligned_floats() : NULL;
+        s.chunked[j] = j < domain->n_out ? aligned_floats() : NULL;
+    }
+    seed_row(domain, 0);
+    for (size_t k = 0; k < STREAM_N; k++) {
+        float v[9];
+        sc_batch_sample(domain, &rng, v);
+        for (int j = 0; j < domain->n_in; j++)
+            s.in[j][k + 1] = v[j];
+    }
+    static const size_t same[3] = {1, 1, 1}, mixed[3] = {1, 2, 1};
+    for (int isa = 0; isa < SC_ISA_COUNT; isa++) {
+        const sc_batch_entry *e = sc_batch_find(kernel, tier, (sc_isa)isa);
+        if (e && sc_isa_supported(e->isa)) {
+            run_whole_and_chunked(e, params_for(e), &s, same);
+            if (e->n_out > 1)
+                run_whole_and_chunked(e, params_for(e), &s, mixed);
+        }
+    }
+    for (int j = 0; j < 9; j++)
+        free(s.in[j]);
+    for (int j = 0; j < 3; j++) {
+        free(s.whole[j]);
+        free(s.chunked[j]);
+    }
+}
+
 static void streaming_stores_give_the_same_bits(void **state)
 {
     (void)state;
-    enum { N = (1 << 21) + 13 };
-    float *x = malloc((N + 1) * sizeof *x), *o1 = malloc((N + 1) * sizeof *o1);
-    float *o2 = malloc((N + 1) * sizeof *o2);
-    assert_non_null(x);
-    assert_non_null(o1);
-    assert_non_null(o2);
-    const sc_batch_entry *domain = sc_batch_find("exp2", "u4", SC_ISA_SCALAR);
-    assert_non_null(domain);
-    seed_row(domain, 0);
-    for (size_t k = 0; k < N; k++)
-        sc_batch_sample(domain, &rng, &x[k + 1]);
-    for (int isa = 0; isa < SC_ISA_COUNT; isa++) {
-        const sc_batch_entry *e = sc_batch_find("exp2", "u4", (sc_isa)isa);
-        if (!e || !sc_isa_supported(e->isa))
-            continue;
-        sc_batch_args whole = {{x + 1}, {o1 + 1}, N, NULL}; /* unaligned by one float */
-        e->fn(&whole);
-        for (size_t start = 0; start < N; start += 4096) {
-            sc_batch_args part = {
-                {x + 1 + start}, {o2 + 1 + start}, N - start < 4096 ? N - start : 4096, NULL};
-            e->fn(&part);
-        }
-        for (size_t k = 1; k <= N; k++)
-            if (!same_value(o1[k], o2[k]))
-                fail_msg("exp2 u4 %s: element %zu streamed %a, stored %a", sc_isa_name(e->isa),
-                         k - 1, (double)o1[k], (double)o2[k]);
-    }
-    free(x);
-    free(o1);
-    free(o2);
+    streamed_matches_stored("exp2", "u4");
+    streamed_matches_stored("normalize", "u3");
+    streamed_matches_stored("shade", "bits8");
 }
 
 /* Every kernel named in the table exists for every instruction set compiled in. */
