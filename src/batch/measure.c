@@ -6,13 +6,17 @@
 #include "shadecalc/batch.h"
 #include "shadecalc/precision.h"
 
-/* The pow u1 domain rule of the scalar built-ins: only normal-float results are stated. */
+/* The pow u1 domain rule of the scalar built-ins: only normal-float results are stated. (The
+ * names are compared only off the normal range: the tests measure ~10^9 outputs.) */
 static int stated(const sc_batch_entry *e, double ref)
 {
-    if (strcmp(e->kernel, "pow") != 0 || strcmp(e->tier, "u1") != 0)
+    if (fabs(ref) >= 0x1p-126 && fabs(ref) <= 0x1.fffffep127)
         return 1;
-    return fabs(ref) >= 0x1p-126 && fabs(ref) <= 0x1.fffffep127;
+    return strcmp(e->kernel, "pow") != 0 || strcmp(e->tier, "u1") != 0;
 }
+
+/* fmax for a that is never NaN, without its library call */
+static double larger(double a, double b) { return b > a ? b : a; }
 
 /* got against ref as a fraction of e's bound: ULPs (ulp, already measured), or relative error
  * with the absolute allowance times the reference's scale. Both NaN, or the same overflow: 0.
@@ -52,16 +56,16 @@ double sc_batch_error_against(const sc_batch_entry *e, const sc_batch_args *a, s
         double ulp = sc_ulp_error(SC_HIGHP, (double)got, ref[j]);
         double ratio = bound_ratio(e, got, ref[j], ulp, ref[e->n_out]);
         double abs_err = fabs((double)got - ref[j]);
-        worst = fmax(worst, ratio);
+        worst = larger(worst, ratio);
         if (isfinite(ulp)) {
-            acc->max_ulp = fmax(acc->max_ulp, ulp);
+            acc->max_ulp = larger(acc->max_ulp, ulp);
             acc->sum_ulp += ulp;
             acc->count++;
         }
         if (isfinite(abs_err) && ref[j] != 0.0)
-            acc->max_rel = fmax(acc->max_rel, abs_err / fabs(ref[j]));
+            acc->max_rel = larger(acc->max_rel, abs_err / fabs(ref[j]));
         if (isfinite(abs_err))
-            acc->max_abs = fmax(acc->max_abs, abs_err);
+            acc->max_abs = larger(acc->max_abs, abs_err);
     }
     if (worst > acc->max_ratio) {
         acc->max_ratio = worst;

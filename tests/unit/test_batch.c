@@ -1,6 +1,6 @@
 /* The batch kernels (shadecalc/batch.h): every stated bound of the table on >= 10^6 inputs per
- * kernel and domain (special values plus domain-covering random inputs, each kernel's seeded
- * from its name: SHADECALC_BATCH_SEED=k draws another set) against the double
+ * kernel, tier and instruction set (special values plus domain-covering random inputs, each
+ * kernel's seeded from its name: SHADECALC_BATCH_SEED=k draws another set) against the double
  * reference (the tiers of a domain and every instruction set on the same inputs); every SIMD
  * kernel against the scalar one on the same inputs, with test values in
  * random lanes among random data, every tail length, unaligned pointers and the special-value
@@ -27,9 +27,10 @@
 #include "tests/support/splitmix.h"
 #include "tests/unit/scale.h"
 
-/* The inputs per kernel and domain of the bound checks: SHADECALC_BATCH_INPUTS when set (`make
- * coverage` runs 10^4: the same code paths, the special values and random inputs in every
- * domain, in a fraction of the time at -O0), else 10^6 (a sample under the sanitizers). */
+/* The inputs of the bound checks, per kernel and domain and the same for each of its tiers and
+ * instruction sets: SHADECALC_BATCH_INPUTS when set (`make coverage` runs 10^4: the same code
+ * paths, the special values and random inputs in every domain, in a fraction of the time at
+ * -O0), else 10^6 (under the sanitizers the sample of tests/unit/scale.h, 1/50 of them). */
 static size_t bound_inputs(void)
 {
     const char *env = getenv("SHADECALC_BATCH_INPUTS");
@@ -238,12 +239,9 @@ static int same_domain(const sc_batch_entry *a, const sc_batch_entry *b)
            memcmp(a->lo, b->lo, sizeof a->lo) == 0 && memcmp(a->hi, b->hi, sizeof a->hi) == 0;
 }
 
-/* Entry e's bound on the first n inputs of b, whose references ref holds (n_out + 1 per
- * element). */
-static void check_entry(const sc_batch_entry *e, buffers *b, size_t n, const double *ref)
+/* Entry e's bound on the inputs of b, whose references ref holds (n_out + 1 per element). */
+static void check_entry(const sc_batch_entry *e, buffers *b, const double *ref)
 {
-    size_t all = b->args.n;
-    b->args.n = n;
     e->fn(&b->args);
     sc_batch_error acc;
     sc_batch_error_init(&acc);
@@ -255,13 +253,10 @@ static void check_entry(const sc_batch_entry *e, buffers *b, size_t n, const dou
         fail_msg("%s): error %.3g× the stated bound (SHADECALC_BATCH_SEED=%llu)", msg,
                  acc.max_ratio, seed_option());
     }
-    b->args.n = all;
 }
 
 /* n inputs in the domain of `first` (a scalar entry), their double references, and every
- * supported entry of the same kernel and domain (each tier, each instruction set) on them: all
- * n on the instruction set the library chose, the first n/20 on the others (which the test
- * below also compares with scalar lane by lane). */
+ * supported entry of the same kernel and domain (each tier, each instruction set) on all n. */
 static void check_domain(const sc_batch_entry *first, size_t n)
 {
     buffers b;
@@ -276,14 +271,15 @@ static void check_domain(const sc_batch_entry *first, size_t n)
     for (int k = 0; k < sc_batch_count; k++) {
         const sc_batch_entry *e = &sc_batch_table[k];
         if (same_domain(e, first) && sc_isa_supported(e->isa))
-            check_entry(e, &b, e->isa == sc_isa_active() ? n : n / 20, ref);
+            check_entry(e, &b, ref);
     }
     free(ref);
     buffers_free(&b);
 }
 
-/* Every bound of the table on 10^6 inputs per kernel and domain: the tiers that share a domain,
- * and the instruction sets, are checked on the same inputs against the same references. */
+/* Every bound of the table on 10^6 inputs per kernel, tier and instruction set: the tiers that
+ * share a domain, and the instruction sets, are checked on the same inputs against the same
+ * references, computed once per domain. */
 static void every_stated_bound_holds(void **state)
 {
     (void)state;

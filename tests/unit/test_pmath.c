@@ -61,6 +61,9 @@ static void dot_rounds_each_operation_left_to_right(void **state)
     /* highp: 1e8 + 1 rounds back to 1e8 (binary32 spacing 8 there), so the sum is 0. */
     assert_true(sc_p_dot(SC_HIGHP, a, b, 3) == 0.0);
     assert_true(sc_p_dot(SC_DOUBLE, a, b, 3) == 1.0);
+    /* double: left to right, each step rounded, as GLSL ES §8.5 writes it (1e16 + 1 is 1e16) */
+    const double c[3] = {1e16, 1, -1e16};
+    assert_true(sc_p_dot(SC_DOUBLE, a, c, 3) == 0.0);
 }
 
 static void length_overflows_in_mediump(void **state)

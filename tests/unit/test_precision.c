@@ -1,5 +1,6 @@
 /* Precision emulation (docs/formulas.md §9): binary16 and lowp rounding at ties, subnormal edges, overflow;
  * the ULP measure; shortest decimals that read back. */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -89,6 +90,13 @@ static void ulp_error_is_measured_in_the_format(void **state)
     assert_true(sc_prec_ulp(SC_HIGHP, 1e-40) == 0x1p-149);
     assert_true(sc_prec_ulp(SC_MEDIUMP, 1.0) == 0x1p-10);
     assert_true(sc_prec_ulp(SC_LOWP, 1.5) == 0x1p-8);
+    /* negative, the ends of binary64 (the ULP subnormal, the argument subnormal), its largest */
+    assert_true(sc_prec_ulp(SC_HIGHP, -3.0) == 0x1p-22);
+    assert_true(sc_prec_ulp(SC_MEDIUMP, 65504.0) == 0x1p5);
+    assert_true(sc_prec_ulp(SC_DOUBLE, 1.0) == 0x1p-52);
+    assert_true(sc_prec_ulp(SC_DOUBLE, 0x1p-1000) == 0x1p-1052);
+    assert_true(sc_prec_ulp(SC_DOUBLE, -0x1p-1060) == 0x1p-1074);
+    assert_true(sc_prec_ulp(SC_DOUBLE, DBL_MAX) == 0x1p971);
     assert_true(sc_ulp_error(SC_HIGHP, 1.0 + 0x1p-23, 1.0) == 1.0);
     assert_true(sc_ulp_error(SC_HIGHP, NAN, NAN) == 0.0);
     assert_true(isinf(sc_ulp_error(SC_HIGHP, INFINITY, 3.0)));
