@@ -21,7 +21,12 @@ enum { MAX_IN = 9, MAX_OUT = 3 };
  * constant j: straight-line code, no copies. params is args.params (the light kernels). */
 typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i, const void *params);
 
-static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
+/* Vectors a lane may take per call (run_wide): the shading kernel's interleave two. */
+enum { MAX_WIDTH = 2 };
+
+/* The loop over a->n elements, `width` vectors per call of f; the last call gets the rest
+ * padded with 1. */
+static SC_INLINE void run_wide(const sc_batch_args *a, int k, int m, lane_n_fn f, int width)
 {
     /* local copies of the pointers and n: the compiler keeps them in registers, where through
      * `a` it reloaded them after every store (the stores might have changed them) */
@@ -29,23 +34,29 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
     float *outs[MAX_OUT];
     memcpy(ins, a->in, sizeof ins);
     memcpy(outs, a->out, sizeof outs);
-    size_t i = 0, n = a->n;
-    for (; i + VW <= n; i += VW)
+    size_t i = 0, n = a->n, step = (size_t)width * VW;
+    for (; i + step <= n; i += step)
         f(ins, outs, i, a->params);
-    if (i == a->n)
+    if (i == n)
         return;
-    float tail_in[MAX_IN][VW], tail_out[MAX_OUT][VW]; /* the tail, padded with 1 */
+    float tail_in[MAX_IN][MAX_WIDTH * VW], tail_out[MAX_OUT][MAX_WIDTH * VW];
     const float *in[MAX_IN] = {0};
     float *out[MAX_OUT];
     for (int j = 0; j < k; j++) {
-        vf_storeu(tail_in[j], load_partial(a->in[j] + i, a->n - i));
+        for (size_t e = 0; e < step; e++)
+            tail_in[j][e] = i + e < n ? a->in[j][i + e] : 1.0f;
         in[j] = tail_in[j];
     }
     for (int j = 0; j < m; j++)
         out[j] = tail_out[j];
     f(in, out, 0, a->params);
     for (int j = 0; j < m; j++)
-        store_partial(a->out[j] + i, vf_loadu(tail_out[j]), a->n - i);
+        memcpy(a->out[j] + i, tail_out[j], (n - i) * sizeof(float));
+}
+
+static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
+{
+    run_wide(a, k, m, f, 1);
 }
 
 #define BATCH_N(name, k, m, lane)                                                                  \
