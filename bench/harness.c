@@ -69,10 +69,10 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
 {
     tier_costs t = shade_tier_costs(tier);
     const sc_brdf *b = &s->model.brdf;
-    /* n, v: two dots (6), the overflow test (2 compares, or: 3), two units; n·v (3; the fast
+    /* n, v: two dots (6), the overflow test (max, compare: 2), two units; n·v (3; the fast
      * tiers' of the loaded vectors times both inverse lengths: 5) */
     int fast = strcmp(tier, "accurate") != 0;
-    double ops = 12 + 2 * t.unit + (fast ? 2 : 0);
+    double ops = 11 + 2 * t.unit + (fast ? 2 : 0);
     /* a light's direction and factor, by kind (light_dir): directional none; point p − pos (3),
      * r² (3), max, min and 1/r² (2 + rcp), l (overflow compare + unit), the r = 0 lanes
      * (compare, 3 selects), w = n·l falloff (1); a spot also −l·axis (4), the cone test (1),
@@ -82,26 +82,26 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
     double point = 14 + t.rcp + t.unit, spot = point + 22;
     /* the lobe (own_specular; lobe factor and colours folded into the uniforms): h = l + v (3),
      * h·h (3), max (1); then Blinn-Phong n·h = (n·l + n·v) rsqrt (add, mul, max: 3 + rsqrt_n),
-     * the cutoff (compare, select) and the squarings of pow_int; GGX without the max: d |h|²
-     * (add, mul, fma), g_v and g_l (each mul, fma, √, mul), |h|⁴/((d |h|²)² (g_v + g_l)) (mul,
-     * add, mul, rcp, mul, mul), v·l (3), b = 1 − √max((1 + v·l)/2, 0) (fma, max, √, sub), b⁵
-     * and F (mul, mul, mul, fma), D V F (mul); both then the lit select and product (2) and
-     * acc += (3 FMA) */
+     * in the accurate tier the cutoff (compare, select; the fast tiers' is the max), and the
+     * squarings of pow_int; GGX without the max: d |h|² (add, mul, fma), g_v and g_l (each mul,
+     * fma, √, mul), |h|⁴/((d |h|²)² (g_v + g_l)) (mul, add, mul, rcp, mul, mul), (v·h)²: accurate
+     * from v·l (3: fma, max), fast |h|²/4 (1), b = 1 − √(v·h)² (√, sub), b⁵ and F (mul, mul,
+     * mul, fma), D V F (mul); both then the lit select and product (2) and acc += (3 FMA) */
     double lobe = 0;
     if (b->kind == SC_BRDF_BLINN_PHONG)
-        lobe = 7 + 3 + t.rsqrt_n + 2 + pow_int_muls(b->m) + 5;
+        lobe = 7 + 3 + t.rsqrt_n + (fast ? 0 : 2) + pow_int_muls(b->m) + 5;
     else if (b->kind == SC_BRDF_COOK_TORRANCE)
-        lobe = 6 + 3 + 2 * 4 + 5 + t.rcp + 3 + 4 + 4 + 1 + 5;
-    /* each light: n·l (3), the lit mask (2 compares, and), the weight select (1), acc += w E
+        lobe = 6 + 3 + 2 * 4 + 5 + t.rcp + (fast ? 1 : 3 + 2) + 2 + 4 + 1 + 5;
+    /* each light: n·l (3), the lit mask (min, compare), the weight select (1), acc += w E
      * c_diff/π (3 FMA); in the generic loop (a scene of no straight-line variant) also its
      * colours per vector (light_vecs_of: 6 mul); a directional light in the fast tiers takes
-     * n·l, and GGX's v·l, of the loaded vectors, times the inverse length (1 mul each) */
+     * n·l of the loaded vectors, times the inverse length (1 mul) */
     int generic = sc_batch_plan_uniforms(plan)->variant == 0;
     for (int k = 0; k < s->n_lights; k++) {
         sc_light_kind kind = s->lights[k].kind;
-        ops += 10 + (generic ? 6 : 0) + lobe;
+        ops += 9 + (generic ? 6 : 0) + lobe;
         if (fast && kind == SC_LIGHT_DIRECTIONAL)
-            ops += b->kind == SC_BRDF_COOK_TORRANCE ? 2 : 1;
+            ops += 1;
         ops += kind == SC_LIGHT_POINT ? point : kind == SC_LIGHT_SPOT ? spot : 0;
     }
     return ops;

@@ -362,7 +362,7 @@ static SC_INLINE void area_kernel(const sc_batch_args *a, sc_light_kind kind,
     }
     shade_vecs c;
     shade_vecs_make(&u, &c);
-    run_uniforms(a, 9, 3, lanes[u.lobe], &c);
+    run_uniforms(a, 9, 3, lanes[u.lobe], &c, 1);
 }
 
 /* Representative point: a lane per lobe of the kernel (lambert, blinn-phong, GGX). */

@@ -37,11 +37,11 @@ static SC_INLINE void func_lane(int tier, func_fn f, const float *const *in, flo
 }
 
 static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_fn lane,
-                                   const void *uniforms)
+                                   const void *uniforms, int width)
 {
     sc_batch_args b = *a;
     b.params = uniforms;
-    run_n(&b, k, m, lane);
+    run_wide(&b, k, m, lane, width);
 }
 
 /* setup: sc_uniforms_atten or sc_uniforms_spot, for the function's kind */
@@ -56,7 +56,7 @@ static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_
     {                                                                                              \
         func_uniforms u;                                                                           \
         setup(a->params, kind, &u);                                                                \
-        run_uniforms(a, 1, 1, name##_lane, &u);                                                    \
+        run_uniforms(a, 1, 1, name##_lane, &u, 1);                                                 \
     }
 
 /* -- attenuation (docs/formulas.md §3; light.c): denominators at least 1e-4, so r = 0 is finite -- */
@@ -530,7 +530,7 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
     static void brdf_##model##_##tier##_loop(const sc_batch_args *a, const brdf_uniforms *u)       \
     {                                                                                              \
         brdf_uniforms local = *u; /* not aliased by the output stores: kept in registers */        \
-        run_uniforms(a, 9, 3, brdf_##model##_##tier, &local);                                      \
+        run_uniforms(a, 9, 3, brdf_##model##_##tier, &local, 1);                                   \
     }
 /* One loop per model, chosen once per call (the sc_brdf's kind), the lane inlined into it, so
  * that each is straight-line. */

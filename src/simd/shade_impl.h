@@ -21,15 +21,20 @@ enum { MAX_IN = 9, MAX_OUT = 3 };
  * constant j: straight-line code, no copies. params is args.params (the light kernels). */
 typedef void (*lane_n_fn)(const float *const *in, float *const *out, size_t i, const void *params);
 
+/* Vectors a lane may take per call (run_wide): the shading kernel's interleave two. */
+enum { MAX_WIDTH = 2 };
+
 /* Elements of a block that the driver runs through buffers: its outputs stay in L1 until they
  * are stored or streamed out. */
 enum { BLOCK = 8 * VW };
+_Static_assert(BLOCK % (MAX_WIDTH * VW) == 0, "a block is whole calls of every width");
 
-/* Elements [start, start + count), count <= BLOCK, computed into a buffer: inputs read in place
- * for a whole block, else through copies padded with 1 (a harmless input for every kernel);
- * outputs streamed with non-temporal stores (a whole block at an aligned output) or copied. */
-static SC_INLINE void run_buffered(const sc_batch_args *a, int k, int m, lane_n_fn f, size_t start,
-                                   size_t count, int stream)
+/* Elements [start, start + count), count <= BLOCK, computed into a buffer, `step` elements per
+ * call of f: inputs read in place for a whole block, else through copies padded with 1 (a
+ * harmless input for every kernel); outputs streamed with non-temporal stores (a whole block at
+ * an aligned output) or copied. */
+static SC_INLINE void run_buffered(const sc_batch_args *a, int k, int m, lane_n_fn f, size_t step,
+                                   size_t start, size_t count, int stream)
 {
     float pad[MAX_IN][BLOCK], buf[MAX_OUT][BLOCK];
     const float *in[MAX_IN] = {0};
@@ -44,7 +49,7 @@ static SC_INLINE void run_buffered(const sc_batch_args *a, int k, int m, lane_n_
     }
     for (int j = 0; j < m; j++)
         out[j] = buf[j];
-    for (size_t v = 0; v < count; v += VW)
+    for (size_t v = 0; v < count; v += step)
         f(in, out, v, a->params);
     for (int j = 0; j < m; j++) {
         if (stream)
@@ -69,13 +74,14 @@ static SC_INLINE int outputs_stream(const sc_batch_args *a, int m, size_t *peel)
     return 1;
 }
 
-/* Small arrays: the lane stores in place, vector by vector, and the tail goes through buffers.
- * Streaming arrays: every element goes through buffers, whole aligned blocks streamed out with
- * non-temporal stores, which save the read of each output line that an ordinary store costs (a
- * fourth of shade's traffic). One call site of the lane for each path keeps the code small. */
-static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
+/* The loop over a->n elements, `width` vectors per call of f. Small arrays: the lane stores in
+ * place, and the tail goes through buffers. Streaming arrays: every element goes through
+ * buffers, whole aligned blocks streamed out with non-temporal stores, which save the read of
+ * each output line that an ordinary store costs (a fourth of shade's traffic). One call site of
+ * the lane for each path keeps the code small. */
+static SC_INLINE void run_wide(const sc_batch_args *a, int k, int m, lane_n_fn f, int width)
 {
-    size_t i = 0, n = a->n, peel = 0;
+    size_t i = 0, n = a->n, peel = 0, step = (size_t)width * VW;
     int stream = outputs_stream(a, m, &peel);
     /* local copies of the pointers: the compiler keeps them in registers, where through `a` it
      * reloaded them after every store (the stores might have changed them) */
@@ -83,15 +89,20 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
     float *outs[MAX_OUT];
     memcpy(ins, a->in, sizeof ins);
     memcpy(outs, a->out, sizeof outs);
-    for (; !stream && i + VW <= n; i += VW)
+    for (; !stream && i + step <= n; i += step)
         f(ins, outs, i, a->params);
     while (i < n) {
         size_t count = i == 0 && peel ? peel : n - i < BLOCK ? n - i : BLOCK;
-        run_buffered(a, k, m, f, i, count, stream && count == BLOCK);
+        run_buffered(a, k, m, f, step, i, count, stream && count == BLOCK);
         i += count;
     }
     if (stream)
         vf_stream_fence();
+}
+
+static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
+{
+    run_wide(a, k, m, f, 1);
 }
 
 #define BATCH_N(name, k, m, lane)                                                                  \
