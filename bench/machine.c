@@ -113,7 +113,7 @@ void bench_machine_measure(bench_machine *m)
 
 /* Float lanes per vector: the compute bound scales the AVX2 peak by width / 8 (AVX-512: 16, its
  * operations taken at the AVX2 rate, as on cores with two 512-bit FMA ports; scalar: the four
- * lanes of src/simd/scalar_vec.h). */
+ * lanes of src/simd/scalar/vec.h). */
 int bench_isa_width(sc_isa isa)
 {
     static const int width[SC_ISA_COUNT] = {4, 4, 8, 16};

@@ -370,8 +370,8 @@ static SC_INLINE void area_kernel(const sc_batch_args *a, sc_light_kind kind,
     AREA_LANE(name##_none, tier, SC_LOBE_NONE, kind)                                               \
     AREA_LANE(name##_blinn, tier, SC_LOBE_BLINN, kind)                                             \
     AREA_LANE(name##_ggx, tier, SC_LOBE_GGX, kind)                                                 \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a)                                                           \
+    KERNEL(name);                                                                                  \
+    KERNEL(name)                                                                                   \
     {                                                                                              \
         static const lane_n_fn lanes[4] = {name##_none, name##_blinn, name##_ggx, name##_none};    \
         area_kernel(a, kind, lanes);                                                               \
@@ -379,8 +379,8 @@ static SC_INLINE void area_kernel(const sc_batch_args *a, sc_light_kind kind,
 /* LTC: one lane (the lobe is the table's) */
 #define AREA_LTC_KERNEL(name, tier, kind)                                                          \
     AREA_LANE(name##_lane, tier, SC_LOBE_NONE, kind)                                               \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a)                                                           \
+    KERNEL(name);                                                                                  \
+    KERNEL(name)                                                                                   \
     {                                                                                              \
         static const lane_n_fn lanes[4] = {name##_lane, name##_lane, name##_lane, name##_lane};    \
         area_kernel(a, kind, lanes);                                                               \

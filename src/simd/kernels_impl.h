@@ -1,6 +1,6 @@
 /* The batch kernels, written once against the vector helpers (vf, vm, vi; vd, vl where
- * SIMD_HAS_DOUBLE) and included by one file per instruction set: src/simd/scalar.c,
- * src/simd/sse41/kernels.c, src/simd/avx2/kernels.c. Every kernel is
+ * SIMD_HAS_DOUBLE) and included, through src/simd/kernel_group.h, by the files of each
+ * instruction set's folder (src/simd/scalar/, sse41/, avx2/, avx512/). Every kernel is
  * `void sc_batch_<kernel>_<tier>_<isa>(const sc_batch_args *)`.
  *
  * Tiers (shadecalc/batch.h): u1 kernels evaluate the algorithm of the scalar highp built-ins
@@ -39,6 +39,10 @@
 #define SC_CAT2(a, b) a##_##b
 #define SC_CAT(a, b) SC_CAT2(a, b)
 #define K(name) SC_CAT(sc_batch_##name, ISA_SUFFIX)
+/* A kernel's declarator. SC_KERNEL_SCOPE (src/simd/kernel_group.h) is empty in the file that
+ * defines the kernel, `static inline` in those that include its header only for the helpers:
+ * there the kernel is never called, so neither compiler generates its code. */
+#define KERNEL(name) SC_KERNEL_SCOPE void K(name)(const sc_batch_args *a)
 
 /* ---- drivers: whole vectors, then the tail through a padded buffer ---- */
 
@@ -123,11 +127,11 @@ static SC_INLINE void run2(const sc_batch_args *a, lane2_fn f)
 }
 
 #define BATCH1(name, lane)                                                                         \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a) { run1(a, lane); }
+    KERNEL(name);                                                                                  \
+    KERNEL(name) { run1(a, lane); }
 #define BATCH2(name, lane)                                                                         \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a) { run2(a, lane); }
+    KERNEL(name);                                                                                  \
+    KERNEL(name) { run2(a, lane); }
 
 /* Lanes where `special` holds get the scalar built-in's result (rare inputs only). */
 static inline vf fixup1(vm special, vf x, vf r, float (*f)(float))

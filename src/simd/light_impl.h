@@ -51,8 +51,8 @@ static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_
     {                                                                                              \
         func_lane(tier, f, in, out, i, u);                                                         \
     }                                                                                              \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a)                                                           \
+    KERNEL(name);                                                                                  \
+    KERNEL(name)                                                                                   \
     {                                                                                              \
         func_uniforms u;                                                                           \
         setup(a->params, kind, &u);                                                                \
@@ -541,8 +541,8 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
     BRDF_LANE(ward, tier)                                                                          \
     BRDF_LANE(oren_nayar, tier)                                                                    \
     BRDF_LANE(cook_torrance, tier)                                                                 \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a)                                                           \
+    KERNEL(name);                                                                                  \
+    KERNEL(name)                                                                                   \
     {                                                                                              \
         static void (*const loops[])(const sc_batch_args *, const brdf_uniforms *) = {             \
             brdf_lambert_##tier##_loop,     brdf_phong_##tier##_loop,                              \

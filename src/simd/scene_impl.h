@@ -372,8 +372,8 @@ static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane, int widt
     SHADE_FIXED_LANES(name##_blinn, tier, SC_LOBE_BLINN)                                           \
     SHADE_FIXED_LANES(name##_ggx, tier, SC_LOBE_GGX)                                               \
     SHADE_LANE(name##_model, tier, SC_LOBE_MODEL)                                                  \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a)                                                           \
+    KERNEL(name);                                                                                  \
+    KERNEL(name)                                                                                   \
     {                                                                                              \
         static const sc_batch_fn loops[][SC_SHADE_VARIANTS] = {SHADE_VARIANTS(name##_none),        \
                                                                SHADE_VARIANTS(name##_blinn),       \
@@ -382,6 +382,11 @@ static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane, int widt
         const sc_shade_uniforms *u = sc_batch_plan_uniforms(a->params);                            \
         loops[u->lobe][u->variant](a);                                                             \
     }
+/* one tier per file (src/simd/kernel_group.h) */
+#if SC_KERNEL_GROUP == SC_GROUP_SHADE_ACCURATE
 SHADE_KERNEL(shade_accurate, ACCURATE)
+#elif SC_KERNEL_GROUP == SC_GROUP_SHADE_BITS12
 SHADE_KERNEL(shade_bits12, FAST12)
+#elif SC_KERNEL_GROUP == SC_GROUP_SHADE_BITS8
 SHADE_KERNEL(shade_bits8, FAST8)
+#endif

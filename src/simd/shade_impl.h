@@ -106,8 +106,8 @@ static SC_INLINE void run_n(const sc_batch_args *a, int k, int m, lane_n_fn f)
 }
 
 #define BATCH_N(name, k, m, lane)                                                                  \
-    void K(name)(const sc_batch_args *a);                                                          \
-    void K(name)(const sc_batch_args *a) { run_n(a, k, m, lane); }
+    KERNEL(name);                                                                                  \
+    KERNEL(name) { run_n(a, k, m, lane); }
 
 /* ---- the operations tiers choose ---- */
 

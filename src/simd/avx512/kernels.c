@@ -1,8 +1,4 @@
-/* The batch kernels for AVX-512 F and DQ (src/simd/kernels_impl.h over avx512/vec.h). */
+/* Every batch kernel but the shading one, for AVX-512 F and DQ (src/simd/kernel_group.h). */
 #include "simd/avx512/vec.h"
-#include "simd/kernels_impl.h"
-#include "simd/shade_impl.h"
-#include "simd/trig_impl.h"
-#include "simd/light_impl.h"
-#include "simd/scene_impl.h"
-#include "simd/area_impl.h"
+#define SC_KERNEL_GROUP SC_GROUP_KERNELS
+#include "simd/kernel_group.h"
