@@ -2,7 +2,7 @@
  * included after src/simd/shade_impl.h by each instruction set's file.
  *
  * Tiers (the enum of shade_impl.h): ACCURATE has sqrt and division rounded once and the u1
- * pow/exp (double lanes; the scalar built-ins in plain C); FAST12 the rsqrt/rcp estimates with
+ * pow/exp (double lanes); FAST12 the rsqrt/rcp estimates with
  * one Newton step and pow/exp_bits12. Every kernel computes the float uniforms of its double
  * parameters (sc_atten, sc_spot, sc_brdf) once per call (src/simd/uniforms.h) and hands them to
  * the lanes as args.params.
@@ -19,11 +19,7 @@ static SC_INLINE vf light_exp(int tier, vf x)
 {
     if (tier != ACCURATE)
         return tier == FAST12 ? exp_bits12(x) : exp_bits8(x);
-#ifdef SIMD_HAS_DOUBLE
     return exp_u1(x);
-#else
-    return lanes1(x, sc_expf);
-#endif
 }
 
 /* ---- one input, one output: attenuation of r and spot of cos θ_s ---- */

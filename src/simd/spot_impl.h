@@ -9,11 +9,7 @@ static SC_INLINE vf light_pow(int tier, vf x, vf y)
 {
     if (tier != ACCURATE)
         return tier == FAST12 ? pow_bits12(x, y) : pow_bits8(x, y);
-#ifdef SIMD_HAS_DOUBLE
     return pow_u1(x, y);
-#else
-    return lanes2(x, y, sc_powf);
-#endif
 }
 
 static SC_INLINE vf vf_clamp(vf x, float lo, float hi)
@@ -40,12 +36,7 @@ typedef sc_func_uniforms func_uniforms;
         return r;                                                                                  \
     }
 POW_UINT(vf_pow_uint, vf, vf_mul)
-#ifdef SIMD_HAS_DOUBLE
 POW_UINT(vd_pow_uint, vd, vd_mul)
-#else
-static SC_INLINE double d_mul(double a, double b) { return a * b; }
-POW_UINT(d_pow_uint, double, d_mul)
-#endif
 
 /* Integer exponents up to this are raised by pow_uint_u1. */
 enum { LOBE_UINT_MAX = 1024 };
@@ -55,15 +46,7 @@ enum { LOBE_UINT_MAX = 1024 };
  * tiers' ULP, no special case, no subnormal float on the way. */
 static SC_INLINE vf pow_uint_u1(vf x, unsigned m)
 {
-#ifdef SIMD_HAS_DOUBLE
     return vf_from_vd(vd_pow_uint(vd_from_lo(x), m), vd_pow_uint(vd_from_hi(x), m));
-#else
-    float b[VW];
-    vf_storeu(b, x);
-    for (int k = 0; k < VW; k++)
-        b[k] = (float)d_pow_uint(b[k], m);
-    return vf_loadu(b);
-#endif
 }
 
 /* e as an integer exponent of pow_uint_u1, or 0 */
