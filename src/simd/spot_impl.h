@@ -64,11 +64,12 @@ static SC_INLINE vf lobe_pow(int tier, vf x, float e)
 {
     if (e == 0.0f)
         return vf_set1(1.0f);
+    unsigned m = lobe_uint(e);
+    if (m) /* 0^m = 0 and 1^m = 1 exactly: no select (x <= 0 and NaN: max gives 0) */
+        return pow_uint_u1(vf_max(x, vf_set1(0.0f)), m);
     vm pos = vf_lt(vf_set1(0.0f), x), one = vf_eq(x, vf_set1(1.0f));
     vf base = vf_select(vm_and(pos, vf_lt(x, vf_set1(1.0f))), x, vf_set1(0.5f));
-    unsigned m = lobe_uint(e);
-    vf p = vf_select(one, vf_set1(1.0f),
-                     m ? pow_uint_u1(base, m) : light_pow(tier, base, vf_set1(e)));
+    vf p = vf_select(one, vf_set1(1.0f), light_pow(tier, base, vf_set1(e)));
     return vf_select(pos, p, vf_set1(0.0f));
 }
 
