@@ -1,15 +1,16 @@
-/* The batch kernels, written once against the vector helpers (vf, vm, vi; vd, vl where
- * SIMD_HAS_DOUBLE) and included, through src/simd/kernel_group.h, by the files of each
- * instruction set's folder (src/simd/scalar/, sse41/, avx2/, avx512/). Every kernel is
+/* The batch kernels, written once against the vector helpers (vf, vm, vi; vd, vl) and included,
+ * through src/simd/kernel_group.h, by the files of each instruction set's folder
+ * (src/simd/scalar/, sse41/, avx2/, avx512/). Every kernel is
  * `void sc_batch_<kernel>_<tier>_<isa>(const sc_batch_args *)`.
  *
  * Tiers (shadecalc/batch.h): u1 kernels evaluate the algorithm of the scalar highp built-ins
  * (src/math/) in double lanes and round once (exp2 and exp where the FMA is one instruction:
- * float lanes, within 1 ULP, no slower than SLEEF's 1-ULP functions), handing the lanes with special inputs (zeros,
- * infinities, NaN, out-of-range arguments) to the scalar built-in, so their results are those of
- * sc_*f up to the FMA contractions of the instruction set; the faster tiers work in float lanes
- * with polynomials fitted on the reduced interval (Chebyshev interpolation, mpmath chebyfit; the
- * fit error is in each comment) and flush results below 2^-125 to zero, as GLSL ES highp allows.
+ * float lanes, within 1 ULP, no slower than SLEEF's 1-ULP functions), handing the lanes with
+ * special inputs (zeros, infinities, NaN, out-of-range arguments) to the scalar built-in, so
+ * their results are those of sc_*f up to the FMA contractions of the instruction set; the
+ * faster tiers work in float lanes with polynomials fitted on the reduced interval (Chebyshev
+ * interpolation, mpmath chebyfit; the fit error is in each comment) and flush results below
+ * 2^-125 to zero, as GLSL ES highp allows.
  */
 #include <float.h>
 #include <math.h>
@@ -165,34 +166,6 @@ static SC_INLINE vf fixup2(vm special, vf x, vf y, vf r, float (*f)(float, float
 {
     return vm_any(special) ? fixup2_lanes(special, x, y, r, f) : r;
 }
-
-/* f on each lane: the scalar built-ins, for the u1 tiers of instruction sets without double
- * lanes, and the kernels that are loops over them (BATCH1_LANES, BATCH2_LANES). */
-static inline vf lanes1(vf x, float (*f)(float))
-{
-    float b[VW];
-    vf_storeu(b, x);
-    for (int k = 0; k < VW; k++)
-        b[k] = f(b[k]);
-    return vf_loadu(b);
-}
-
-static inline vf lanes2(vf x, vf y, float (*f)(float, float))
-{
-    float bx[VW], by[VW];
-    vf_storeu(bx, x);
-    vf_storeu(by, y);
-    for (int k = 0; k < VW; k++)
-        bx[k] = f(bx[k], by[k]);
-    return vf_loadu(bx);
-}
-
-#define BATCH1_LANES(name, f)                                                                      \
-    static inline vf name##_lanes(vf x) { return lanes1(x, f); }                                   \
-    BATCH1(name, name##_lanes)
-#define BATCH2_LANES(name, f)                                                                      \
-    static inline vf name##_lanes(vf x, vf y) { return lanes2(x, y, f); }                          \
-    BATCH2(name, name##_lanes)
 
 /* Polynomial loops are unrolled into straight-line FMAs with their constants in registers:
  * gcc -O2 left them as loops that broadcast a coefficient per step (exp u1 2.60 to
@@ -382,7 +355,6 @@ BATCH1(inversesqrt_u4, rsqrt_newton)
 BATCH1(inversesqrt_bits11, vf_rsqrt_est)
 BATCH1(sqrt_u1, sqrt_u1)
 
-#ifdef SIMD_HAS_DOUBLE
 /* ---- double lanes: the u1 tier ---- */
 
 /* A double kernel on the low and high halves of a float vector, rounded back to float. */
@@ -597,4 +569,3 @@ BATCH1(log2_u1, log2_u1)
 BATCH1(log_u1, log_u1)
 BATCH2(pow_u1, pow_u1)
 BATCH1(inversesqrt_u1, inversesqrt_u1)
-#endif

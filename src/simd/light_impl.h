@@ -2,7 +2,7 @@
  * included after src/simd/shade_impl.h by each instruction set's file.
  *
  * Tiers (the enum of shade_impl.h): ACCURATE has sqrt and division rounded once and the u1
- * pow/exp (double lanes; the scalar built-ins in plain C); FAST12 the rsqrt/rcp estimates with
+ * pow/exp (double lanes); FAST12 the rsqrt/rcp estimates with
  * one Newton step and pow/exp_bits12. Every kernel computes the float uniforms of its double
  * parameters (sc_atten, sc_spot, sc_brdf) once per call (src/simd/uniforms.h) and hands them to
  * the lanes as args.params.
@@ -19,11 +19,7 @@ static SC_INLINE vf light_exp(int tier, vf x)
 {
     if (tier != ACCURATE)
         return tier == FAST12 ? exp_bits12(x) : exp_bits8(x);
-#ifdef SIMD_HAS_DOUBLE
     return exp_u1(x);
-#else
-    return lanes1(x, sc_expf);
-#endif
 }
 
 /* ---- one input, one output: attenuation of r and spot of cos θ_s ---- */
@@ -96,18 +92,55 @@ static SC_INLINE vf atten_window(int tier, vf r, const func_uniforms *u)
 }
 
 /* Barzel 1997: f_c (r/r_c)^(−s_e) beyond r_c; f_max exp(k0 (r/r_c)^(−k1)) inside (−k1 > 0,
- * so r = 0 gives f_max): one pow of r/r_c for both; f_c = f_max is the flat limit f_max. */
+ * so r = 0 gives f_max); f_c = f_max is the flat limit f_max. Each side is computed only where
+ * a lane needs it (the lights' falloff is mostly beyond r_c), and by the same formula whatever
+ * the other lanes, so that a result does not depend on its neighbours. */
+
+/* r/r_c, the base of the tiers' pow (negative r: 0) */
+static SC_INLINE vf pixar_base(vf r, const func_uniforms *u)
+{
+    return vf_max(vf_div(r, vf_set1(u->k[1])), vf_set1(0.0f));
+}
+
+/* f_c (r_c/q)^m in double: q, r_c and f_c exact; the quotient's rounding raised to the m-th
+ * power, at most 2 log2 m products and the last one: (m + 2 log2 m + 1) 2^-53 relative, 2^-19
+ * of a float ULP for m up to 1024, before the one rounding to float */
+static SC_INLINE vd pixar_far_d(vd q, vd r_c, vd f_c, unsigned m)
+{
+    return vd_mul(f_c, vd_pow_uint(vd_div(r_c, q), m));
+}
+
+/* The lanes beyond r_c. An integer s_e (the usual inverse square: 2) is raised by binary
+ * powering in double, as the spot exponents are (src/simd/spot_impl.h): faster than the tiers'
+ * pow, and within 0.5 ULP (pixar_far_d); the lanes at or inside r_c divide by r_c instead of
+ * r, so that no quotient is infinite. Other exponents take the tier's pow of r/r_c. */
+static SC_INLINE vf pixar_far(int tier, vf r, const func_uniforms *u)
+{
+    unsigned m = lobe_uint(u->k[2]);
+    if (!m)
+        return vf_mul(vf_set1(u->k[0]), light_pow(tier, pixar_base(r, u), vf_set1(-u->k[2])));
+    vf q = vf_max(r, vf_set1(u->k[1]));
+    vd r_c = vd_set1(u->k[1]), f_c = vd_set1(u->k[0]);
+    return vf_from_vd(pixar_far_d(vd_from_lo(q), r_c, f_c, m),
+                      pixar_far_d(vd_from_hi(q), r_c, f_c, m));
+}
+
+/* The lanes at or inside r_c (and NaN) */
+static SC_INLINE vf pixar_near(int tier, vf r, const func_uniforms *u)
+{
+    vf f_max = vf_set1(u->k[3]);
+    if (u->k[4] == 0.0f)
+        return f_max;
+    vf t = light_pow(tier, pixar_base(r, u), vf_set1(u->k[5]));
+    return vf_mul(f_max, light_exp(tier, vf_mul(vf_set1(u->k[4]), t)));
+}
+
 static SC_INLINE vf atten_pixar(int tier, vf r, const func_uniforms *u)
 {
-    vm outside = vf_lt(vf_set1(u->k[1]), r);
-    if (u->k[4] == 0.0f && !vm_any(outside))
-        return vf_set1(u->k[3]);
-    vf y = vf_select(outside, vf_set1(-u->k[2]), vf_set1(u->k[5]));
-    vf t = light_pow(tier, vf_max(vf_div(r, vf_set1(u->k[1])), vf_set1(0.0f)), y);
-    vf inside = vf_set1(u->k[3]);
-    if (u->k[4] != 0.0f)
-        inside = vf_mul(inside, light_exp(tier, vf_mul(vf_set1(u->k[4]), t)));
-    return vf_select(outside, vf_mul(vf_set1(u->k[0]), t), inside);
+    vm outside = vf_lt(vf_set1(u->k[1]), r), near = vf_nlt(vf_set1(u->k[1]), r);
+    vf far_value = vm_any(outside) ? pixar_far(tier, r, u) : vf_set1(0.0f);
+    vf near_value = vm_any(near) ? pixar_near(tier, r, u) : vf_set1(0.0f);
+    return vf_select(outside, far_value, near_value);
 }
 
 /* Karis 2013: saturate(1 − (r/r_max)^4)² / max(r², 1e-4), with 1 − (r/r_max)^4 as

@@ -168,11 +168,7 @@ static SC_INLINE vf tier_pow(int tier, vf x, vf y)
         return lobe_pow_fast(x, y, log2_c8, 9, exp2_c3, 4);
     if (tier == FAST8)
         return lobe_pow_fast(x, y, log2_c4, 5, exp2_c2, 3);
-#ifdef SIMD_HAS_DOUBLE
     return pow_d(x, y);
-#else
-    return lanes2(x, y, sc_powf);
-#endif
 }
 
 #include "simd/spot_impl.h"

@@ -9,11 +9,7 @@ static SC_INLINE vf light_pow(int tier, vf x, vf y)
 {
     if (tier != ACCURATE)
         return tier == FAST12 ? pow_bits12(x, y) : pow_bits8(x, y);
-#ifdef SIMD_HAS_DOUBLE
     return pow_u1(x, y);
-#else
-    return lanes2(x, y, sc_powf);
-#endif
 }
 
 static SC_INLINE vf vf_clamp(vf x, float lo, float hi)
@@ -40,12 +36,7 @@ typedef sc_func_uniforms func_uniforms;
         return r;                                                                                  \
     }
 POW_UINT(vf_pow_uint, vf, vf_mul)
-#ifdef SIMD_HAS_DOUBLE
 POW_UINT(vd_pow_uint, vd, vd_mul)
-#else
-static SC_INLINE double d_mul(double a, double b) { return a * b; }
-POW_UINT(d_pow_uint, double, d_mul)
-#endif
 
 /* Integer exponents up to this are raised by pow_uint_u1. */
 enum { LOBE_UINT_MAX = 1024 };
@@ -55,15 +46,7 @@ enum { LOBE_UINT_MAX = 1024 };
  * tiers' ULP, no special case, no subnormal float on the way. */
 static SC_INLINE vf pow_uint_u1(vf x, unsigned m)
 {
-#ifdef SIMD_HAS_DOUBLE
     return vf_from_vd(vd_pow_uint(vd_from_lo(x), m), vd_pow_uint(vd_from_hi(x), m));
-#else
-    float b[VW];
-    vf_storeu(b, x);
-    for (int k = 0; k < VW; k++)
-        b[k] = (float)d_pow_uint(b[k], m);
-    return vf_loadu(b);
-#endif
 }
 
 /* e as an integer exponent of pow_uint_u1, or 0 */
@@ -81,11 +64,12 @@ static SC_INLINE vf lobe_pow(int tier, vf x, float e)
 {
     if (e == 0.0f)
         return vf_set1(1.0f);
+    unsigned m = lobe_uint(e);
+    if (m) /* 0^m = 0 and 1^m = 1 exactly: no select (x <= 0 and NaN: max gives 0) */
+        return pow_uint_u1(vf_max(x, vf_set1(0.0f)), m);
     vm pos = vf_lt(vf_set1(0.0f), x), one = vf_eq(x, vf_set1(1.0f));
     vf base = vf_select(vm_and(pos, vf_lt(x, vf_set1(1.0f))), x, vf_set1(0.5f));
-    unsigned m = lobe_uint(e);
-    vf p = vf_select(one, vf_set1(1.0f),
-                     m ? pow_uint_u1(base, m) : light_pow(tier, base, vf_set1(e)));
+    vf p = vf_select(one, vf_set1(1.0f), light_pow(tier, base, vf_set1(e)));
     return vf_select(pos, p, vf_set1(0.0f));
 }
 

@@ -156,7 +156,6 @@ static inline vf atan2_bits12(vf y, vf x) { return atan2_fast(y, x, atan_c3, 3);
 BATCH2(atan2_bits22, atan2_bits22)
 BATCH2(atan2_bits12, atan2_bits12)
 
-#ifdef SIMD_HAS_DOUBLE
 /* ---- double lanes: the u1 tier ---- */
 
 static const double two_over_pi_d = 0x1.45f306dc9c883p-1;
@@ -301,9 +300,3 @@ BATCH1(sin_u1, sin_u1)
 BATCH1(cos_u1, cos_u1)
 BATCH1(acos_u1, acos_u1)
 BATCH2(atan2_u1, atan2_u1)
-#else
-BATCH1_LANES(sin_u1, sc_sinf)
-BATCH1_LANES(cos_u1, sc_cosf)
-BATCH1_LANES(acos_u1, sc_acosf)
-BATCH2_LANES(atan2_u1, sc_atan2f)
-#endif

@@ -294,18 +294,15 @@ static void every_stated_bound_holds(void **state)
 }
 
 /* 1 if the SIMD kernel runs the scalar kernel's algorithm with the same roundings: SSE4.1
- * has no FMA; the scalar lane's estimates are not rsqrtps/rcpps; the scalar u1 kernels are the
- * built-ins of src/math/, whose polynomials the double lanes shorten. */
+ * has no FMA, and its double lanes are the scalar kernels' two; the scalar lane's estimates
+ * are not rsqrtps/rcpps. */
 static int same_bits_expected(const sc_batch_entry *e)
 {
-    return e->isa == SC_ISA_SSE41 && strcmp(e->tier, "u1") != 0 &&
-           strcmp(e->kernel, "inversesqrt") != 0 && strcmp(e->kernel, "dot") != 0 &&
-           strcmp(e->kernel, "reflect") != 0 && strcmp(e->kernel, "normalize") != 0 &&
-           strcmp(e->kernel, "length") != 0 && strcmp(e->kernel, "shade") != 0 &&
-           strcmp(e->kernel, "brdf") != 0 && strncmp(e->kernel, "area_", 5) != 0 &&
-           /* u1 pow in double lanes is not always sc_powf's bits near a rounding midpoint */
-           strcmp(e->kernel, "atten_pixar") != 0 && strcmp(e->kernel, "spot_opengl") != 0 &&
-           strcmp(e->kernel, "spot_directx") != 0;
+    return e->isa == SC_ISA_SSE41 && strcmp(e->kernel, "inversesqrt") != 0 &&
+           strcmp(e->kernel, "dot") != 0 && strcmp(e->kernel, "reflect") != 0 &&
+           strcmp(e->kernel, "normalize") != 0 && strcmp(e->kernel, "length") != 0 &&
+           strcmp(e->kernel, "shade") != 0 && strcmp(e->kernel, "brdf") != 0 &&
+           strncmp(e->kernel, "area_", 5) != 0;
 }
 
 static int same_value(float a, float b)

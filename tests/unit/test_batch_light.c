@@ -261,6 +261,51 @@ static void attenuation_by_hand(void **state)
     assert_true(fabs(out[3] - 3.0 * pow(0.25, 1.5)) <= 1e-6);
 }
 
+/* |got − want| in units of the binary32 ULP at want (normal want) */
+static double ulps_from(float got, double want)
+{
+    int e;
+    frexp(want, &e);
+    return fabs((double)got - want) / ldexp(1.0, e - 24);
+}
+
+/* Integer falloff exponents beyond r_c, raised by binary powering in double
+ * (src/simd/light_impl.h): every tier and instruction set within 0.5 ULP (and 2^-20 for the
+ * double products) of the closed form f_c (r_c/r)^s_e, r from r_c's float successor to 1000;
+ * the lanes inside r_c, in the same vectors, within the rows' bounds. */
+static void pixar_integer_exponents_round_once(void **state)
+{
+    (void)state;
+    static const double exponents[] = {1, 2, 3, 7};
+    for (int k = 0; k < (int)(sizeof exponents / sizeof exponents[0]); k++) {
+        sc_atten p = sc_batch_test_atten;
+        p.s_e = exponents[k];
+        float r_c = (float)p.r_c, points[] = {r_c, nextafterf(r_c, 0.0f), nextafterf(r_c, 2 * r_c)};
+        char what[64];
+        snprintf(what, sizeof what, "s_e = %g", p.s_e);
+        check_function("atten_pixar", &p, 1000.0, points, 3, what);
+        batch_buffers b;
+        batch_buffers_alloc(&b, N_FUNC, &p);
+        for (size_t i = 0; i < N_FUNC; i++)
+            b.in[0][i] = i == 0 ? nextafterf(r_c, 2 * r_c)
+                                : (float)(p.r_c + (1000.0 - p.r_c) * (double)(i % 997) / 996.0);
+        for (int r = 0; r < sc_batch_count; r++) {
+            const sc_batch_entry *e = &sc_batch_table[r];
+            if (strcmp(e->kernel, "atten_pixar") != 0 || !sc_isa_supported(e->isa))
+                continue;
+            e->fn(&b.args);
+            for (size_t i = 0; i < N_FUNC; i++) {
+                double want = p.f_c * pow(p.r_c / (double)b.in[0][i], p.s_e);
+                if (b.in[0][i] > r_c && ulps_from(b.out[0][i], want) > 0.5 + 0x1p-20)
+                    fail_msg("atten_pixar %s %s (%s): r = %a gives %a, (r_c/r)^s_e = %a", e->tier,
+                             sc_isa_name(e->isa), what, (double)b.in[0][i], (double)b.out[0][i],
+                             want);
+            }
+        }
+        batch_buffers_release(&b);
+    }
+}
+
 static void spot_edges(void **state)
 {
     (void)state;
@@ -916,6 +961,7 @@ int main(void)
         cmocka_unit_test(brdf_parameter_extremes_within_bounds),
         cmocka_unit_test(attenuation_by_hand),
         cmocka_unit_test(attenuation_edges),
+        cmocka_unit_test(pixar_integer_exponents_round_once),
         cmocka_unit_test(spot_by_hand),
         cmocka_unit_test(spot_edges),
         cmocka_unit_test(anisotropic_brdfs_within_bounds),

@@ -8,7 +8,6 @@
 #define VW 8
 #define VD_PER_VF 2
 #define ISA_SUFFIX avx2
-#define SIMD_HAS_DOUBLE 1
 #define SIMD_HAS_FMA 1 /* vf_fma and vd_fma round once */
 
 typedef __m256 vf;

@@ -10,7 +10,6 @@
 #define VW 16
 #define VD_PER_VF 2
 #define ISA_SUFFIX avx512
-#define SIMD_HAS_DOUBLE 1
 #define SIMD_HAS_FMA 1 /* vf_fma and vd_fma round once */
 
 typedef __m512 vf;

@@ -8,7 +8,6 @@
 #define VW 4
 #define VD_PER_VF 2
 #define ISA_SUFFIX sse41
-#define SIMD_HAS_DOUBLE 1
 
 typedef __m128 vf;
 typedef __m128 vm;
