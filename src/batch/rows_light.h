@@ -25,7 +25,6 @@ ROWS_P(spot_directx, bits12, 1, 1, 0, B12, 0x1p-125,
 ROWS_P(spot_smoothstep, u8, 1, 1, 8, 0, 0, "-1 <= cos <= 1", COS_RANGE, 10, SPOT_P)
 ROWS_P(brdf, bits16, 9, 3, 0, 0x1p-16, 0x1p-20, BRDF_DOM, VEC(sc_batch_gen_brdf), 80, BRDF_P)
 ROWS_P(brdf, bits12, 9, 3, 0, B12, B12, "as bits16", VEC(sc_batch_gen_brdf), 80, BRDF_P)
-ROWS_P(brdf, bits8, 9, 3, 0, B8, B8, "as bits16", VEC(sc_batch_gen_brdf), 80, BRDF_P)
 #define AREA_DOM(what)                                                                             \
     "n, v nonzero, |n.v| >= 2^-6 |n||v|, p in [-3, 3]^3 (" what "); error against the double "     \
     "approximation, absolute: the bound x scale, scale = max L_e (c_diff + c_spec)"

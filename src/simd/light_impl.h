@@ -587,4 +587,3 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
     }
 BRDF_KERNEL(brdf_bits16, ACCURATE)
 BRDF_KERNEL(brdf_bits12, FAST12)
-BRDF_KERNEL(brdf_bits8, FAST8)

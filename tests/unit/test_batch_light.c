@@ -192,7 +192,7 @@ static void brdf_normal_incidence_by_hand(void **state)
     assert_int_equal(sc_batch_run("brdf", "bits12", &a), 0);
     assert_true(fabs(bl[0] - 0.2 / pi) <= 1e-6);
     p.kind = (sc_brdf_kind)99; /* out of range: lambert */
-    assert_int_equal(sc_batch_run("brdf", "bits8", &a), 0);
+    assert_int_equal(sc_batch_run("brdf", "bits12", &a), 0);
     assert_true(fabs(g[0] - 0.5 / pi) <= 1e-6);
 }
 
