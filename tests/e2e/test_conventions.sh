@@ -58,11 +58,12 @@ expect "shade json explain: ward exp_term" 0 '~"exp_term": ' '' -- shade -f json
 expect "shade json explain: primary"      0 '~"primary": [' '' -- shade -f json --explain -l "directional dir=0,0,1" -b 'opengl separate-specular=1'
 
 # Progress bars (standard error on a terminal, from script(1)): at most ~10 redraws a second,
-# with an ETA. 9 million rows of three built-ins on one thread run for a few seconds (of x+y,
-# run in blocks, about one: too close to the bar's one-second delay).
+# with an ETA. 27 million rows of three built-ins on one thread run for a few seconds (9 million,
+# since the scalar kernels run in vector lanes, take about 1.5 s: too close to the bar's
+# one-second delay on a loaded machine).
 if command -v script >/dev/null 2>&1; then
     start=$(date +%s.%N)
-    script -qec "'$SHADECALC' sweep -j 1 --var x=0:1:3000 --var y=0:1:3000 --image '$t/progress.exr' 'sin(x * 7.0) * cos(y * 5.0) + pow(x, y)'" /dev/null >"$t/tty.out" 2>&1
+    script -qec "'$SHADECALC' sweep -j 1 --var x=0:1:9000 --var y=0:1:3000 --image '$t/progress.exr' 'sin(x * 7.0) * cos(y * 5.0) + pow(x, y)'" /dev/null >"$t/tty.out" 2>&1
     end=$(date +%s.%N)
     redraws=$(tr '\r' '\n' <"$t/tty.out" | grep -c '^sweep \[')
     if awk -v n="$redraws" -v s="$start" -v e="$end" 'BEGIN { exit !(n <= 10 * (e - s) + 3) }' &&
