@@ -79,14 +79,26 @@ static SC_INLINE void partial1(const float *x, float *out, size_t start, size_t 
  * caches to the inputs and saves the read of each output line before it is written. */
 enum { STREAM_MIN = 1 << 21 };
 
+/* 1 if the outputs are large enough to stream (STREAM_MIN) and share one alignment, whose first
+ * `peel` elements come before an aligned vector. */
+static SC_INLINE int outputs_stream(const sc_batch_args *a, int m, size_t *peel)
+{
+    size_t bytes = VW * sizeof(float), misalign = (uintptr_t)a->out[0] % bytes;
+    if (a->n < STREAM_MIN || misalign % sizeof(float) != 0)
+        return 0;
+    for (int j = 1; j < m; j++)
+        if ((uintptr_t)a->out[j] % bytes != misalign)
+            return 0;
+    *peel = misalign ? (bytes - misalign) / sizeof(float) : 0;
+    return 1;
+}
+
 static SC_INLINE void run1(const sc_batch_args *a, lane1_fn f)
 {
     const float *x = a->in[0];
     float *out = a->out[0];
-    size_t i = 0, n = a->n;
-    size_t misalign = (uintptr_t)out % (VW * sizeof(float));
-    if (n >= STREAM_MIN && misalign % sizeof(float) == 0) {
-        size_t peel = misalign ? (VW * sizeof(float) - misalign) / sizeof(float) : 0;
+    size_t i = 0, n = a->n, peel;
+    if (outputs_stream(a, 1, &peel)) {
         partial1(x, out, 0, peel, f);
         for (i = peel; i + 2 * VW <= n; i += 2 * VW) {
             vf a = f(vf_loadu(x + i)), b = f(vf_loadu(x + i + VW));

@@ -39,17 +39,18 @@ static SC_INLINE void run_buffered(const sc_batch_args *a, int k, int m, lane_n_
     float pad[MAX_IN][BLOCK], buf[MAX_OUT][BLOCK];
     const float *in[MAX_IN] = {0};
     float *out[MAX_OUT];
+    size_t calls_end = (count + step - 1) / step * step; /* the elements the calls read */
     for (int j = 0; j < k; j++) {
         in[j] = a->in[j] + start;
         if (count < BLOCK) {
-            for (size_t e = 0; e < BLOCK; e++)
+            for (size_t e = 0; e < calls_end; e++)
                 pad[j][e] = e < count ? in[j][e] : 1.0f;
             in[j] = pad[j];
         }
     }
     for (int j = 0; j < m; j++)
         out[j] = buf[j];
-    for (size_t v = 0; v < count; v += step)
+    for (size_t v = 0; v < calls_end; v += step)
         f(in, out, v, a->params);
     for (int j = 0; j < m; j++) {
         if (stream)
@@ -58,20 +59,6 @@ static SC_INLINE void run_buffered(const sc_batch_args *a, int k, int m, lane_n_
         else
             memcpy(a->out[j] + start, buf[j], count * sizeof(float));
     }
-}
-
-/* 1 if the outputs are large enough to stream (STREAM_MIN) and share one alignment, whose first
- * `peel` elements come before an aligned vector. */
-static SC_INLINE int outputs_stream(const sc_batch_args *a, int m, size_t *peel)
-{
-    size_t bytes = VW * sizeof(float), misalign = (uintptr_t)a->out[0] % bytes;
-    if (a->n < STREAM_MIN || misalign % sizeof(float) != 0)
-        return 0;
-    for (int j = 1; j < m; j++)
-        if ((uintptr_t)a->out[j] % bytes != misalign)
-            return 0;
-    *peel = misalign ? (bytes - misalign) / sizeof(float) : 0;
-    return 1;
 }
 
 /* The loop over a->n elements, `width` vectors per call of f. Small arrays: the lane stores in
