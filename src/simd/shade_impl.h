@@ -29,43 +29,46 @@ enum { MAX_WIDTH = 2 };
 enum { BLOCK = 8 * VW };
 _Static_assert(BLOCK % (MAX_WIDTH * VW) == 0, "a block is whole calls of every width");
 
-/* Elements [start, start + count), count <= BLOCK, computed into a buffer, `step` elements per
- * call of f: inputs read in place for a whole block, else through copies padded with 1 (a
- * harmless input for every kernel); outputs streamed with non-temporal stores (a whole block at
- * an aligned output) or copied. */
-static SC_INLINE void run_buffered(const sc_batch_args *a, int k, int m, lane_n_fn f, size_t step,
-                                   size_t start, size_t count, int stream)
-{
+/* Elements [start, start + count), `step` elements per call of f, the lane's
+ * only call site (each inlined copy of a lane is kilobytes of code: one site halves the shading
+ * kernel's compile time). Inputs are read in place when the calls cover exactly count elements,
+ * else through copies padded with 1 (a harmless input for every kernel); outputs are stored in
+ * place likewise, or computed into an L1 buffer and copied, or, for a whole block at an
+ * aligned output (`stream`), streamed out with non-temporal stores. */
+static SC_INLINE void run_block(const sc_batch_args *a, const float *const *ins, float *const *outs,
+                                int k, int m, lane_n_fn f, size_t step, size_t start, size_t count,
+                                int stream)
+{ /* count <= BLOCK unless the calls cover it exactly and it is not streamed */
     float pad[MAX_IN][BLOCK], buf[MAX_OUT][BLOCK];
     const float *in[MAX_IN] = {0};
     float *out[MAX_OUT];
     size_t calls_end = (count + step - 1) / step * step; /* the elements the calls read */
+    int exact = calls_end == count, buffered = stream || !exact;
     for (int j = 0; j < k; j++) {
-        in[j] = a->in[j] + start;
-        if (count < BLOCK) {
+        in[j] = ins[j] + start;
+        if (!exact) {
             for (size_t e = 0; e < calls_end; e++)
                 pad[j][e] = e < count ? in[j][e] : 1.0f;
             in[j] = pad[j];
         }
     }
     for (int j = 0; j < m; j++)
-        out[j] = buf[j];
+        out[j] = buffered ? buf[j] : outs[j] + start;
     for (size_t v = 0; v < calls_end; v += step)
         f(in, out, v, a->params);
-    for (int j = 0; j < m; j++) {
+    for (int j = 0; buffered && j < m; j++) {
         if (stream)
             for (size_t v = 0; v < BLOCK; v += VW)
-                vf_stream(a->out[j] + start + v, vf_loadu(buf[j] + v));
+                vf_stream(outs[j] + start + v, vf_loadu(buf[j] + v));
         else
-            memcpy(a->out[j] + start, buf[j], count * sizeof(float));
+            memcpy(outs[j] + start, buf[j], count * sizeof(float));
     }
 }
 
-/* The loop over a->n elements, `width` vectors per call of f. Small arrays: the lane stores in
- * place, and the tail goes through buffers. Streaming arrays: every element goes through
- * buffers, whole aligned blocks streamed out with non-temporal stores, which save the read of
- * each output line that an ordinary store costs (a fourth of shade's traffic). One call site of
- * the lane for each path keeps the code small. */
+/* The loop over a->n elements, `width` vectors per call of f. Streaming arrays: whole
+ * aligned blocks are streamed out with non-temporal stores, which save the read of each output
+ * line that an ordinary store costs (a fourth of shade's traffic); the first block is the peel
+ * up to that alignment. */
 static SC_INLINE void run_wide(const sc_batch_args *a, int k, int m, lane_n_fn f, int width)
 {
     size_t i = 0, n = a->n, peel = 0, step = (size_t)width * VW;
@@ -76,11 +79,13 @@ static SC_INLINE void run_wide(const sc_batch_args *a, int k, int m, lane_n_fn f
     float *outs[MAX_OUT];
     memcpy(ins, a->in, sizeof ins);
     memcpy(outs, a->out, sizeof outs);
-    for (; !stream && i + step <= n; i += step)
-        f(ins, outs, i, a->params);
     while (i < n) {
-        size_t count = i == 0 && peel ? peel : n - i < BLOCK ? n - i : BLOCK;
-        run_buffered(a, k, m, f, step, i, count, stream && count == BLOCK);
+        size_t left = n - i, count;
+        if (stream)
+            count = i == 0 && peel ? peel : left < BLOCK ? left : BLOCK;
+        else /* all whole steps in place at once, then the tail through buffers */
+            count = left >= step ? left / step * step : left;
+        run_block(a, ins, outs, k, m, f, step, i, count, stream && count == BLOCK);
         i += count;
     }
     if (stream)
