@@ -496,16 +496,28 @@ static void speedups(bench_row *rows, int first, int end, const char *accurate_t
     }
 }
 
-/* a no slower and no less accurate (max ULP) than b */
-static int no_worse(const bench_row *a, const bench_row *b)
+/* a's median is below b's by more than 3 × their combined MAD (the test of --compare) */
+static int significantly_faster(const bench_row *a, const bench_row *b)
 {
-    return a->err.max_ulp <= b->err.max_ulp && a->ns_per_elem <= b->ns_per_elem;
+    double spread = sqrt(a->ns_mad * a->ns_mad + b->ns_mad * b->ns_mad);
+    return a->ns_per_elem < b->ns_per_elem - 3.0 * spread;
 }
 
-/* Pareto set of rows [first, end), peers included: not beaten in both max ULP and time by
- * another row; and for each tier, the first peer row that dominates it among those built for
- * the tier's instruction set or an older one: a loop built with AVX-512 beats an AVX2 tier
- * only on the CPUs where the AVX-512 tier runs instead. */
+/* a dominates b (Pareto): no less accurate (max ULP) and not significantly slower, and better
+ * in one of the two: more accurate, or significantly faster. Two rows that compute the same
+ * to the same error in times within their noise (a memory-bound loop and its plain C twin)
+ * dominate neither way, where comparing bare medians flagged one or the other by chance. */
+static int dominates(const bench_row *a, const bench_row *b)
+{
+    if (!(a->err.max_ulp <= b->err.max_ulp) || significantly_faster(b, a))
+        return 0;
+    return a->err.max_ulp < b->err.max_ulp || significantly_faster(a, b);
+}
+
+/* Pareto set of rows [first, end), peers included: the rows no other row dominates; and for
+ * each tier, the first peer row that dominates it among those built for the tier's instruction
+ * set or an older one: a loop built with AVX-512 beats an AVX2 tier only on the CPUs where the
+ * AVX-512 tier runs instead. */
 static void pareto(bench_row *rows, int first, int end)
 {
     for (int i = first; i < end; i++) {
@@ -514,11 +526,10 @@ static void pareto(bench_row *rows, int first, int end)
         b->dominated_by = NULL;
         for (int j = first; j < end; j++) {
             const bench_row *a = &rows[j];
-            int better = a->err.max_ulp < b->err.max_ulp || a->ns_per_elem < b->ns_per_elem;
-            if (j != i && no_worse(a, b) && better)
-                b->pareto = 0;
-            if (b->entry && !a->entry && a->peer_isa <= b->entry->isa && no_worse(a, b) &&
-                !b->dominated_by)
+            if (j == i || !dominates(a, b))
+                continue;
+            b->pareto = 0;
+            if (b->entry && !a->entry && a->peer_isa <= b->entry->isa && !b->dominated_by)
                 b->dominated_by = a;
         }
     }

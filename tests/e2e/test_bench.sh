@@ -60,7 +60,7 @@ check_json() {
     name=$1; shift
     if "$SHADECALC" bench "$@" --format json >"$e2e_tmp/b.json" 2>"$e2e_tmp/err" &&
         python3 - "$e2e_tmp/b.json" <<'PY'
-import json, sys
+import json, math, sys
 doc = json.load(open(sys.argv[1]))
 keys = ["kernel", "isa", "tier", "n", "ns_per_elem", "ns_min", "ns_max", "ns_mad", "cv", "noisy", "speedup_vs_scalar",
         "speedup_vs_libm_loop", "max_ulp", "mean_ulp", "max_rel", "max_abs", "bound_ulp",
@@ -86,11 +86,16 @@ def peer_level(p):
 for r in rows:
     assert r["max_ulp"] >= 0 and r["not_correctly_rounded"] >= 0, r
     dom = r["dominated_by"]
-    if dom is not None:  # a tier, dominated by a peer row no slower and no less accurate
+    if dom is not None:  # a tier, dominated by a peer row (Pareto, ties within 3 MAD)
         assert r["bound_ulp"] is not None or r["bound_rel"] is not None, r
         peer = [p for p in rows if p["kernel"] == r["kernel"] and p["n"] == r["n"] and
                 (p["isa"] + ("" if p["tier"] == "loop" else " " + p["tier"])) == dom]
-        assert peer and peer[0]["ns_per_elem"] <= r["ns_per_elem"] and peer[0]["max_ulp"] <= r["max_ulp"], (r, peer)
+        assert peer, (r, dom)
+        p = peer[0]
+        spread = 3 * math.hypot(p["ns_mad"], r["ns_mad"])
+        faster = p["ns_per_elem"] < r["ns_per_elem"] - spread
+        assert p["max_ulp"] <= r["max_ulp"] and p["ns_per_elem"] <= r["ns_per_elem"] + spread, (r, p)
+        assert p["max_ulp"] < r["max_ulp"] or faster, (r, p)
         # judged only by peers built for its instruction set or an older one
         assert peer_level(peer[0]) <= level[r["isa"]], (r, peer)
     if r["tier"] == "loop" or r["isa"].startswith("sleef"):
