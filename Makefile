@@ -55,8 +55,8 @@ $(BUILD)/obj/src/simd/%.o: SIMD_DEBUG := -g1
 ifeq ($(SAN),1)
 $(BUILD)/obj/src/simd/%.o: SIMD_DEBUG := -g1 -O1
 endif
-# The instrumentation is most of that time: clang 14 -O1 spent 25.2 CPU-s on
-# src/simd/avx512/shade_bits8.c with ASan+UBSan, 4.5 without. On a host that cannot run the
+# The instrumentation is most of that time: clang 14 -O1 spent 28.9 CPU-s on
+# src/simd/avx512/shade_bits12.c with ASan+UBSan, 5.3 without. On a host that cannot run the
 # AVX-512 kernels (no AVX-512 F and DQ: the tests skip them), the sanitizer tree compiles them
 # without it, with -Werror still; on a host that runs them, instrumented.
 HOST_AVX512 ?= $(shell $(CC) -march=native -dM -E -x c /dev/null 2>/dev/null | grep -cE '__AVX512(F|DQ)__')
@@ -211,7 +211,8 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/programs/%.o $(STATIC)
 # Most of check's CPU is compiling the SIMD kernels of src/simd/: in a fresh clone, when each
 # instruction set was one file, the gcc tree took 318 CPU-s, 256 of them for scalar, sse41, avx2
 # and avx512 (60-73 s each); clang with ASan+UBSan 156 s for avx2, 137 s for avx512, 39 s for
-# the 81 other files. Each is now four files (src/simd/kernel_group.h), a make -j job each.
+# the 81 other files. Each is now three files (src/simd/kernel_group.h), a make -j job each:
+# gcc 12 took 159 CPU-s for the twelve, 233 s when the shading kernel's bits8 tier made four.
 # The plain unit and e2e tests and lib-tests took 191 CPU-s (all 10^6 inputs; test_batch_light
 # and test_batch the heaviest).
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)

@@ -40,19 +40,17 @@ enum { N_SCENES = (int)(sizeof scenes / sizeof scenes[0]) };
  * estimate — loads, stores, broadcasts of uniforms and the tests of rare lanes' branches not.
  * Recount when the kernels change. The primitives as a tier computes them: */
 typedef struct {
-    double rsqrt_n; /* 1/√x of the normalizations (bits8 normalizes as bits12): accurate √ and
-                     * ÷ (2); fast an estimate and a Newton step: est, 2 mul, fma, mul (5) */
-    double unit;    /* a/|a| from a·a: max, then accurate √ and 3 ÷ (5), fast rsqrt_n + 3 mul */
-    double rcp;     /* 1/x: accurate ÷; bits12 est, mul, sub, mul (4); bits8 est */
+    double rsqrt_n; /* 1/√x of the normalizations: accurate √ and ÷ (2); bits12 an estimate
+                     * and a Newton step: est, 2 mul, fma, mul (5) */
+    double unit; /* a/|a| from a·a: max, then accurate √ and 3 ÷ (5), bits12 rsqrt_n + 3 mul */
+    double rcp;  /* 1/x: accurate ÷; bits12 est, mul, sub, mul (4) */
 } tier_costs;
 
 static tier_costs shade_tier_costs(const char *tier)
 {
     if (strcmp(tier, "accurate") == 0)
         return (tier_costs){2, 5, 1};
-    if (strcmp(tier, "bits12") == 0)
-        return (tier_costs){5, 9, 4};
-    return (tier_costs){5, 9, 1}; /* bits8 */
+    return (tier_costs){5, 9, 4}; /* bits12 */
 }
 
 /* Multiplies of x^m by binary powering (pow_int): ⌊log2 m⌋ squarings, popcount(m) − 1

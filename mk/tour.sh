@@ -60,4 +60,4 @@ ls "$out"
 echo ")"
 
 echo; echo "== Speed against accuracy: the shading kernel's tiers on this CPU (make bench: all kernels) =="
-step bench --n 4096 --repeat 3 --tier accurate,bits12,bits8 shade
+step bench --n 4096 --repeat 3 --tier accurate,bits12 shade

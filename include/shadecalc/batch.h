@@ -162,7 +162,7 @@ int sc_batch_run(const char *kernel, const char *tier, const sc_batch_args *a);
 
 /* ---- scene plans ---- */
 
-/* Compiles scene for tier (accurate, bits12, bits8) on isa (else the best supported set below
+/* Compiles scene for tier (accurate, bits12) on isa (else the best supported set below
  * it that has the tier): every per-light and per-BRDF uniform in float, computed once; the
  * kernel and its variant resolved once — straight-line code for one to four lights that are all
  * directional or all point lights with inverse-square falloff (with lambert, blinn-phong or the

@@ -88,7 +88,7 @@ typedef struct {
     const sc_scene *scene;
     sc_prec prec;     /* the precision sc_shade computes in */
     const char *tier; /* highp: the batch shading kernel's tier (batch.h: accurate,
-                                  bits12, bits8); NULL: accurate */
+                                  bits12); NULL: accurate */
     sc_shading shading;
     sc_camera camera;
     int threads;                     /* 0: one per online core */

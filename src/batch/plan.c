@@ -31,8 +31,7 @@ sc_batch_plan *sc_batch_plan_compile(const sc_scene *scene, const char *tier, sc
 {
     const sc_batch_entry *e = shade_kernel(tier, isa);
     if (!e) {
-        snprintf(why, size, "tier %s: the shading kernel's tiers are accurate, bits12, bits8",
-                 tier);
+        snprintf(why, size, "tier %s: the shading kernel's tiers are accurate, bits12", tier);
         return NULL;
     }
     sc_batch_plan *plan = calloc(1, sizeof *plan);

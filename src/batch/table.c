@@ -82,7 +82,6 @@ const sc_batch_entry sc_batch_table[] = {
     ROWS(length, u2, 3, 1, 2, 0, 0, "|a| in [2^-60, 2^60]", VEC(sc_batch_gen_vector), 5)
     ROWS(shade, accurate, 9, 3, 0, 0x1p-15, 0x1p-20, "n, v nonzero, |n.v| >= 2^-6 |n||v|, blinn-phong m <= 128, ggx alpha >= 0.2, cos of the spot angle not within 2^-16 of a hard cone edge; error relative, plus 2^-20 x scale", VEC(sc_batch_gen_shade), 40)
     ROWS(shade, bits12, 9, 3, 0, B12, B12, "as accurate", VEC(sc_batch_gen_shade), 40)
-    ROWS(shade, bits8, 9, 3, 0, B8, B8, "as accurate", VEC(sc_batch_gen_shade), 40)
 #include "batch/rows_trig.h"
 #include "batch/rows_light.h"
 };

@@ -74,7 +74,7 @@ static void usage(FILE *out)
             "  -p, --precision P    double|highp|mediump|lowp (default highp)\n"
             "      --isa I          scalar|sse4.1|avx2|avx512: the kernels' instruction set\n"
             "                       (default: SHADECALC_ISA, else the best this CPU has)\n"
-            "      --tier T         accurate|bits12|bits8: the shading kernel's tier\n"
+            "      --tier T         accurate|bits12: the shading kernel's tier\n"
             "                       (default accurate)\n"
             "      --compare        the Gouraud/Phong comparison (writes into --output-dir)\n"
             "      --output-dir DIR where --compare writes its images (default .)\n"
@@ -191,7 +191,7 @@ static int parse_isa(const char *arg)
 static int parse_tier(const char *arg, const char **out)
 {
     if (!sc_batch_find("shade", arg, SC_ISA_SCALAR)) {
-        sc_error("render: --tier %s: expected accurate, bits12 or bits8", arg);
+        sc_error("render: --tier %s: expected accurate or bits12", arg);
         return SC_EXIT_USAGE;
     }
     *out = arg;

@@ -51,7 +51,7 @@ static void usage(FILE *out)
             "      --preset NAME        attenuation|spot|lobe|albedo: the lecture's figures\n"
             "  -p, --precision P        double|highp|mediump|lowp (default highp)\n"
             "      --tier T             shading rows by the batch kernel's tier T (accurate|\n"
-            "                           bits12|bits8), the scene compiled once; default: the\n"
+            "                           bits12), the scene compiled once; default: the\n"
             "                           scalar equation at -p\n"
             "  -f, --format F           csv|tsv|jsonl (default csv; jsonl: JSON Lines, one\n"
             "                           object per row, also called json)\n"

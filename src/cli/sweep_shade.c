@@ -333,9 +333,10 @@ static int check_angles(const shade_plan *s)
     return SC_EXIT_OK;
 }
 
-/* --tier: the scene compiled once, when one scene serves every row: highp, lights (not a BRDF
- * alone), no $variables in the specs, no angle moving directional lights, no anisotropic
- * roughness (whose frame the kernels build from n, not from --tangent). */
+/* --tier: the scene compiled once, when one scene serves every row: a tier of the shading
+ * kernel, highp, lights (not a BRDF alone), no $variables in the specs, no angle moving
+ * directional lights, no anisotropic roughness (whose frame the kernels build from n, not from
+ * --tangent). */
 static int compile_tier(shade_plan *s, const char *tier)
 {
     const char *why = NULL;
@@ -343,7 +344,9 @@ static int compile_tier(shade_plan *s, const char *tier)
     int directional = 0;
     for (int k = 0; k < s->setup.n_lights; k++)
         directional |= s->setup.lights[k].kind == SC_LIGHT_DIRECTIONAL;
-    if (s->prec != SC_HIGHP)
+    if (!sc_batch_find("shade", tier, SC_ISA_SCALAR))
+        why = "expected accurate or bits12";
+    else if (s->prec != SC_HIGHP)
         why = "the batch kernels compute highp";
     else if (s->brdf_only)
         why = "a BRDF without lights is f(l, v), not shading: give a --light";

@@ -117,7 +117,6 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
                                         sc_light_kind kind, const sc_light_uniforms *lt,
                                         const light_vecs *lv, v3 n, v3 v, vf nv, v3 p)
 {
-    int nt = tier == FAST8 ? FAST12 : tier;
     const sc_area_uniforms *a = &lt->area;
     vf zero = vf_set1(0.0f);
     v3 c = v3_sub(v3_set1(a->centre), p);
@@ -134,10 +133,10 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
         v3 P = v3_add(L, v3_scale(C, vf_select(vf_lt(zero, cl), toward, zero)));
         vf pp = v3_dot(P, P);
         vm at_r = vm_or(vf_le(d, vf_set1(a->radius)), vf_eq(pp, zero)); /* inside: l_s = r */
-        v3 ls = v3_select(at_r, r, v3_normalize_dd(nt, P, pp));
+        v3 ls = v3_select(at_r, r, v3_normalize_dd(tier, P, pp));
         vf cos_s = v3_dot(n, ls);
         vm lit = vf_lt(zero, cos_s);
-        vf sp = vf_select(lit, own_specular(tier, nt, lobe, sv, n, v, ls, cos_s, nv, v3_dot(v, ls)),
+        vf sp = vf_select(lit, own_specular(tier, lobe, sv, n, v, ls, cos_s, nv, v3_dot(v, ls)),
                           zero);
         vf w = vf_mul(vf_mul(sp, energy_normalisation(lobe, sv, a, d)),
                       vf_mul(area_irradiance(kind, a, ls, c, dc, p), vf_max(cos_s, zero)));
@@ -236,12 +235,12 @@ static SC_INLINE vf ltc_mass(const vf m[SC_LTC_ROW])
  * frame's tangent where v is along n: its axis chosen on the unit n, which may differ from
  * brdf.c's at the seam; no matter, as with v along n the lobes are symmetric about n),
  * y = z × x. */
-static SC_INLINE void view_frame(int nt, v3 n, v3 v, vf nv, v3 axes[3])
+static SC_INLINE void view_frame(int tier, v3 n, v3 v, vf nv, v3 axes[3])
 {
     v3 x = v3_sub(v, v3_scale(n, nv));
     vf xx = v3_dot(x, x);
-    axes[0] = v3_select(vf_lt(xx, vf_set1(0x1p-40f)), tangent_of(nt, n, tangent_axis_x(n)),
-                        v3_normalize_dd(nt, x, xx));
+    axes[0] = v3_select(vf_lt(xx, vf_set1(0x1p-40f)), tangent_of(tier, n, tangent_axis_x(n)),
+                        v3_normalize_dd(tier, x, xx));
     axes[1] = v3_cross(n, axes[0]);
     axes[2] = n;
 }
@@ -292,7 +291,6 @@ static SC_INLINE void ltc_sums(const float *ring, int sides, v3 q, v3 e1, v3 e2,
 static SC_INLINE v3 ltc_term(int tier, const sc_shade_uniforms *s, sc_light_kind kind,
                              const sc_light_uniforms *lt, v3 n, v3 v, vf nv, v3 p)
 {
-    int nt = tier == FAST8 ? FAST12 : tier;
     const sc_area_uniforms *a = &lt->area;
     vf zero = vf_set1(0.0f);
     v3 q = v3_sub(v3_set1(a->centre), p);
@@ -303,7 +301,7 @@ static SC_INLINE v3 ltc_term(int tier, const sc_shade_uniforms *s, sc_light_kind
     if (!vm_any(seen))
         return (v3){zero, zero, zero};
     v3 axes[3];
-    view_frame(nt, n, v, nv, axes);
+    view_frame(tier, n, v, nv, axes);
     vf m[SC_LTC_ROW], cosine, lobe;
     ltc_lookup(s, nv, m);
     if (kind == SC_LIGHT_RECT)

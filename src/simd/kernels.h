@@ -17,7 +17,7 @@
     X(exp_bits8) X(log2_u1) X(log2_u4) X(log2_bits12) X(log2_bits8) X(log_u1) X(log_u4)          \
     X(log_bits12) X(log_bits8) X(pow_u1) X(pow_bits12) X(pow_bits8) X(inversesqrt_u1)            \
     X(inversesqrt_u4) X(inversesqrt_bits11) X(sqrt_u1) X(dot_bits22) X(reflect_bits22)           \
-    X(normalize_u3) X(length_u2) X(shade_accurate) X(shade_bits12) X(shade_bits8)
+    X(normalize_u3) X(length_u2) X(shade_accurate) X(shade_bits12)
 
 #define SC_DECLARE_SCALAR(name) void sc_batch_##name##_scalar(const sc_batch_args *a);
 #define SC_DECLARE_SSE41(name) void sc_batch_##name##_sse41(const sc_batch_args *a);

@@ -17,9 +17,7 @@
 
 static SC_INLINE vf light_exp(int tier, vf x)
 {
-    if (tier != ACCURATE)
-        return tier == FAST12 ? exp_bits12(x) : exp_bits8(x);
-    return exp_u1(x);
+    return tier == ACCURATE ? exp_u1(x) : exp_bits12(x);
 }
 
 /* ---- one input, one output: attenuation of r and spot of cos θ_s ---- */
@@ -221,12 +219,12 @@ static SC_INLINE vm tangent_axis_x(v3 n)
 
 /* sc_frame_make's tangent for a unit n: e_x where use_x (tangent_axis_x), else e_y, made
  * orthogonal to n */
-static SC_INLINE v3 tangent_of(int nt, v3 n, vm use_x)
+static SC_INLINE v3 tangent_of(int tier, v3 n, vm use_x)
 {
     vf tn = vf_select(use_x, n.x, n.y), one = vf_set1(1.0f), zero = vf_set1(0.0f);
     v3 t = {vf_sub(vf_select(use_x, one, zero), vf_mul(tn, n.x)),
             vf_sub(vf_select(use_x, zero, one), vf_mul(tn, n.y)), vf_mul(vf_sub(zero, tn), n.z)};
-    return v3_normalize(nt, t);
+    return v3_normalize(tier, t);
 }
 
 /* (1 − c)(1 + c) = sin²θ, accurate near c = 1 */
@@ -241,9 +239,9 @@ static SC_INLINE vf sin2_of(vf c)
  *   sl  = s2 / α_hi² + (1/α_lo² − 1/α_hi²) (h_u·e_lo)²
  *   p_w = α_lo² sin²θ_w + (α_hi² − α_lo²) (w·e_hi)²
  * where e_lo is the axis of the smaller α (t for α_x), e_hi the other. */
-static SC_INLINE void aniso_geometry(int nt, const brdf_uniforms *u, vm use_x, brdf_geometry *g)
+static SC_INLINE void aniso_geometry(int tier, const brdf_uniforms *u, vm use_x, brdf_geometry *g)
 {
-    v3 t = tangent_of(nt, g->n, use_x), b = v3_cross(g->n, t);
+    v3 t = tangent_of(tier, g->n, use_x), b = v3_cross(g->n, t);
     int x_lo = u->ax <= u->ay;
     v3 e_lo = x_lo ? t : b, e_hi = x_lo ? b : t;
     float lo = x_lo ? u->ax : u->ay, hi = x_lo ? u->ay : u->ax;
@@ -257,10 +255,10 @@ static SC_INLINE void aniso_geometry(int nt, const brdf_uniforms *u, vm use_x, b
     g->pv = vf_fma(d, vf_mul(v_hi, v_hi), vf_mul(lo2v, sin2_of(g->nv)));
 }
 
-/* The geometry of unit n, l, v; nt the tier of the normalizations; n_given the normal before
- * its normalization (the tangent's axis). */
-static SC_INLINE brdf_geometry brdf_geometry_make(int nt, const brdf_uniforms *u, v3 n_given, v3 n,
-                                                  v3 l, v3 v)
+/* The geometry of unit n, l, v; tier that of the tangent's normalization; n_given the normal
+ * before its normalization (the tangent's axis). */
+static SC_INLINE brdf_geometry brdf_geometry_make(int tier, const brdf_uniforms *u, v3 n_given,
+                                                  v3 n, v3 l, v3 v)
 {
     brdf_geometry g;
     g.n = n, g.l = l, g.v = v;
@@ -272,17 +270,17 @@ static SC_INLINE brdf_geometry brdf_geometry_make(int nt, const brdf_uniforms *u
     g.s2 = cross2(n, hu);
     g.sl = g.pl = g.pv = vf_set1(0.0f);
     if (u->aniso)
-        aniso_geometry(nt, u, tangent_axis_x(n_given), &g);
+        aniso_geometry(tier, u, tangent_axis_x(n_given), &g);
     return g;
 }
 
 static SC_INLINE brdf_geometry brdf_geometry_of(int tier, const brdf_uniforms *u,
                                                 const float *const *in, size_t i)
 {
-    int nt = tier == FAST8 ? FAST12 : tier; /* the lobes multiply the directions' errors */
     v3 n = v3_load(in, 6, i);
-    return brdf_geometry_make(nt, u, n, v3_normalize(nt, n), v3_normalize(nt, v3_load(in, 0, i)),
-                              v3_normalize(nt, v3_load(in, 3, i)));
+    return brdf_geometry_make(tier, u, n, v3_normalize(tier, n),
+                              v3_normalize(tier, v3_load(in, 0, i)),
+                              v3_normalize(tier, v3_load(in, 3, i)));
 }
 
 static SC_INLINE brdf_weights weights(vf w0, vf w1, vf w2) { return (brdf_weights){{w0, w1, w2}}; }

@@ -112,16 +112,15 @@ static SC_INLINE vf v_dot_h2(int tier, vf hh, vf vl)
 
 /* The kernel's own lobes for one light (n, v, l unit; nl = n·l, nv = n·v, vl = v·l) without their
  * constant factor (light_vecs_of): normalized or plain Blinn-Phong (n·h)^m, and GGX with Smith
- * height-correlated masking and Schlick's Fresnel (grey F0). nt is the tier of the
- * normalizations. */
-static SC_INLINE vf own_specular(int tier, int nt, sc_lobe lobe, const shade_vecs *c, v3 n, v3 v,
-                                 v3 l, vf nl, vf nv, vf vl)
+ * height-correlated masking and Schlick's Fresnel (grey F0). */
+static SC_INLINE vf own_specular(int tier, sc_lobe lobe, const shade_vecs *c, v3 n, v3 v, v3 l,
+                                 vf nl, vf nv, vf vl)
 {
     v3 h = v3_add(l, v);
     vf hh = v3_dot(h, h);
     if (lobe == SC_LOBE_BLINN) { /* RTR3 §7.6 */
         /* n·h = n·(l + v)/|h| (n_dot_h), floored at 2^-40; l = −v: h = 0 */
-        vf inv_h = tier_rsqrt(nt, vf_max(hh, vf_set1(FLT_MIN)));
+        vf inv_h = tier_rsqrt(tier, vf_max(hh, vf_set1(FLT_MIN)));
         vf nh = vf_mul(n_dot_h(tier, n, h, nl, nv), inv_h);
         const sc_shade_uniforms *s = c->s;
         unsigned m = tier == ACCURATE && s->lobe_m > POW_INT_MAX_ACCURATE ? 0u : s->lobe_m;
@@ -138,8 +137,9 @@ static SC_INLINE vf own_specular(int tier, int nt, sc_lobe lobe, const shade_vec
      * (Heitz 2014 eq. 99): D V = α²/(2π) / (d² (g_v + g_l)). With n·h² = (n·(l + v))²/|h|²,
      * d |h|² = (n·(l + v))² (α² − 1) + |h|² needs no root of |h|², and D V = α²/(2π) |h|⁴ /
      * ((d |h|²)² (g_v + g_l)), one reciprocal. The roots are square-root instructions in every
-     * tier: one operation each, rounded once, where an estimate needs two (bits8) or six (and
-     * bits8's x rsqrt(x) measured no faster: the multiplies, not the divider, bound the loop).
+     * tier: one operation each, rounded once, where x rsqrt(x) needs six with its Newton step, or
+     * two without (the former bits8 tier's, which measured no faster: the multiplies, not the
+     * divider, bound the loop).
      * F = F0 + (1 − F0) b^5, b = 1 − v·h (Schlick 1994), v·h = (1 + v·l)/|h| = √((1 + v·l)/2)
      * for unit l and v, |h|² = 2 (1 + v·l): apart from |h|, F's factor needs no h at all. b is 0
      * or at least 2^-24 in magnitude (1 − v·h, exact for v·h >= 1/2; the fast tiers' v·h may
@@ -192,7 +192,7 @@ static SC_INLINE vf falloff_of(int tier, light_shape shape, const sc_light_unifo
 
 /* Direction to a light and its irradiance factor: 1 (directional), or f_d times the spot
  * factor; at the light itself (r = 0) l = n, as light.h has it. */
-static SC_INLINE v3 light_dir(int tier, int nt, light_shape shape, const sc_light_uniforms *lt,
+static SC_INLINE v3 light_dir(int tier, light_shape shape, const sc_light_uniforms *lt,
                               const light_vecs *lv, v3 n, const float *const *in, size_t i,
                               vf *falloff)
 {
@@ -203,7 +203,7 @@ static SC_INLINE v3 light_dir(int tier, int nt, light_shape shape, const sc_ligh
     v3 d = v3_sub(lv->pos, v3_load(in, 6, i));
     vf r2 = v3_dot(d, d);
     *falloff = falloff_of(tier, shape, lt, r2);
-    v3 l = v3_normalize_dd(nt, d, r2);
+    v3 l = v3_normalize_dd(tier, d, r2);
     vm at_light = vf_eq(r2, vf_set1(0.0f));
     l = (v3){vf_select(at_light, n.x, l.x), vf_select(at_light, n.y, l.y),
              vf_select(at_light, n.z, l.z)};
@@ -247,9 +247,8 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
     vf nv = sf->nv;
     if (shape.kind >= SC_LIGHT_SPHERE)
         return area_term(tier, lobe, c, shape.kind, lt, lv, n, v, nv, in, i, acc);
-    int nt = tier == FAST8 ? FAST12 : tier;
     vf falloff, zero = vf_set1(0.0f);
-    v3 l = light_dir(tier, nt, shape, lt, lv, n, in, i, &falloff);
+    v3 l = light_dir(tier, shape, lt, lv, n, in, i, &falloff);
     vf nl, vl;
     light_cosines(tier, shape, sf, l, &nl, &vl);
     /* lit: both cosines positive (where either is NaN the min is n·l) */
@@ -257,7 +256,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
     vf w = vf_select(lit, vf_mul(nl, falloff), zero); /* cos θ_i · falloff */
     if (lobe == SC_LOBE_MODEL) {
         const sc_brdf_uniforms *bu = &c->s->brdf;
-        brdf_geometry g = brdf_geometry_make(nt, bu, v3_load(in, 0, i), n, l, v);
+        brdf_geometry g = brdf_geometry_make(tier, bu, v3_load(in, 0, i), n, l, v);
         v3 f = v3_select(lit, brdf_colour(bu, any_model(tier, bu, &g)), (v3){zero, zero, zero});
         v3 e = v3_scale(lv->color, w);
         return (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
@@ -267,7 +266,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
                vf_fma(w, lv->diff.z, acc.z)};
     if (lobe == SC_LOBE_NONE)
         return acc;
-    vf ws = vf_select(lit, vf_mul(w, own_specular(tier, nt, lobe, c, n, v, l, nl, nv, vl)), zero);
+    vf ws = vf_select(lit, vf_mul(w, own_specular(tier, lobe, c, n, v, l, nl, nv, vl)), zero);
     return (v3){vf_fma(ws, lv->spec.x, acc.x), vf_fma(ws, lv->spec.y, acc.y),
                 vf_fma(ws, lv->spec.z, acc.z)};
 }
@@ -281,8 +280,7 @@ static SC_INLINE void shade_tier(int tier, sc_lobe lobe, light_shape shape, int 
                                  const shade_vecs *c)
 {
     const sc_shade_uniforms *s = c->s;
-    int nt = tier == FAST8 ? FAST12 : tier;
-    surface sf = surface_at(nt, in, i);
+    surface sf = surface_at(tier, in, i);
     v3 acc = c->amb;
     if (count < 0)
         for (int k = 0; k < s->n_lights; k++) {
@@ -305,9 +303,8 @@ static SC_INLINE void shade_pair(int tier, sc_lobe lobe, light_shape shape, int 
                                  const shade_vecs *c)
 {
     const sc_shade_uniforms *s = c->s;
-    int nt = tier == FAST8 ? FAST12 : tier;
     size_t j = i + VW;
-    surface sa = surface_at(nt, in, i), sb = surface_at(nt, in, j);
+    surface sa = surface_at(tier, in, i), sb = surface_at(tier, in, j);
     v3 acc_a = c->amb, acc_b = c->amb;
     for (int k = 0; k < count; k++) { /* a constant count: unrolled */
         const sc_light_uniforms *lt = &s->lights[k];
@@ -387,6 +384,4 @@ static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane, int widt
 SHADE_KERNEL(shade_accurate, ACCURATE)
 #elif SC_KERNEL_GROUP == SC_GROUP_SHADE_BITS12
 SHADE_KERNEL(shade_bits12, FAST12)
-#elif SC_KERNEL_GROUP == SC_GROUP_SHADE_BITS8
-SHADE_KERNEL(shade_bits8, FAST8)
 #endif

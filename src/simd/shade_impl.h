@@ -5,14 +5,16 @@
  * Tiers differ only in the few operations below (tier_rsqrt, tier_rcp, tier_sqrt, tier_pow):
  *   ACCURATE  sqrt and division rounded once; pow as the u1 kernel (double lanes)
  *   FAST12    rsqrt / rcp estimate with one Newton step; pow_bits12
- *   FAST8     the bare estimate instructions; pow_bits8. The shading kernel keeps the Newton
- *             step in its normalizations even here: (n·h)^m multiplies the relative error of
- *             n·h by m, and 3 · 2^-12 · 32 would be 2^-5.4.
+ * (A tier of the bare estimate instructions and pow_bits8, bits8, was removed from the shading
+ * kernel: its normalizations had to keep the Newton step, as (n·h)^m multiplies the relative
+ * error of n·h by m and 3 · 2^-12 · 32 would be 2^-5.4, so for Blinn-Phong with an integer
+ * exponent and directional lights it computed the bits of bits12, and for GGX it was 3-6%
+ * faster at 3350 ULP against 53.)
  * The tier argument is a constant at every call, so each kernel compiles to straight-line code
  * with no branch on the tier.
  */
 
-enum { ACCURATE, FAST12, FAST8, REFINED }; /* REFINED: rsqrt_refined (normalize u3) */
+enum { ACCURATE, FAST12, REFINED }; /* REFINED: rsqrt_refined (normalize u3) */
 enum { MAX_IN = 9, MAX_OUT = 3 };
 
 /* ---- driver: k input arrays, m output arrays ---- */
@@ -119,14 +121,12 @@ static SC_INLINE vf tier_rsqrt(int tier, vf x)
 #else
         return rsqrt_refined(x);
 #endif
-    return tier == FAST12 ? rsqrt_newton(x) : vf_rsqrt_est(x);
+    return rsqrt_newton(x);
 }
 
 static SC_INLINE vf tier_rcp(int tier, vf x)
 {
-    if (tier == ACCURATE)
-        return vf_div(vf_set1(1.0f), x);
-    return tier == FAST12 ? rcp_newton(x) : vf_rcp_est(x);
+    return tier == ACCURATE ? vf_div(vf_set1(1.0f), x) : rcp_newton(x);
 }
 
 /* sqrt of x > 0 */
@@ -136,31 +136,27 @@ static SC_INLINE vf tier_sqrt(int tier, vf x)
 }
 
 /* x^y for x in [2^-126, 1], y >= 0: the specular lobe and the spot falloff, where no special
- * case can occur, so the fast tiers skip the selects of pow_bits12/pow_bits8: 2^t, t = y log2 x
- * <= 0, with log2 and 2^f as in exp2_fast/log2_fast (same polynomials, same bounds). Results
- * below 2^-100 are flushed to 0: the lobe is then 30 decades under its peak, and the subnormal
+ * case can occur, so the fast tier skips the selects of pow_bits12: 2^t, t = y log2 x <= 0,
+ * with log2 and 2^f as in exp2_fast/log2_fast (same polynomials, same bounds). Results below
+ * 2^-100 are flushed to 0: the lobe is then 30 decades under its peak, and the subnormal
  * products it would otherwise feed cost a microcode assist per lane on x86 (bits12 ran 2×
- * slower than bits8 for that alone). */
-static SC_INLINE vf lobe_pow_fast(vf x, vf y, const float *lc, int ln, const float *ec, int en)
+ * slower than the former bits8 tier for that alone). */
+static SC_INLINE vf lobe_pow_fast(vf x, vf y)
 {
     vf m, e;
     log_split(x, &m, &e);
     vf u = vf_sub(m, vf_set1(1.0f));
-    vf t = vf_mul(y, vf_fma(u, poly(u, lc, ln), e));
+    vf t = vf_mul(y, vf_fma(u, poly(u, log2_c8, 9), e));
     vf tc = vf_max(t, vf_set1(-125.0f));
     vi k = vi_round(tc);
-    vf p = poly(vf_sub(tc, vi_to_vf(k)), ec, en);
+    vf p = poly(vf_sub(tc, vi_to_vf(k)), exp2_c3, 4);
     vf r = vf_mul(p, vi_as_vf(vi_shl23(vi_add(k, vi_set1(127)))));
     return vf_select(vf_lt(t, vf_set1(-100.0f)), vf_set1(0.0f), r);
 }
 
 static SC_INLINE vf tier_pow(int tier, vf x, vf y)
 {
-    if (tier == FAST12)
-        return lobe_pow_fast(x, y, log2_c8, 9, exp2_c3, 4);
-    if (tier == FAST8)
-        return lobe_pow_fast(x, y, log2_c4, 5, exp2_c2, 3);
-    return pow_d(x, y);
+    return tier == ACCURATE ? pow_d(x, y) : lobe_pow_fast(x, y);
 }
 
 #include "simd/spot_impl.h"

@@ -7,9 +7,7 @@
 /* pow by tier; the u1 one hands NaN, infinities, zeros and 1 to the built-in */
 static SC_INLINE vf light_pow(int tier, vf x, vf y)
 {
-    if (tier != ACCURATE)
-        return tier == FAST12 ? pow_bits12(x, y) : pow_bits8(x, y);
-    return pow_u1(x, y);
+    return tier == ACCURATE ? pow_u1(x, y) : pow_bits12(x, y);
 }
 
 static SC_INLINE vf vf_clamp(vf x, float lo, float hi)

@@ -3,7 +3,12 @@
 
 expect "help"          0 '~usage: shadecalc bench' '' -- bench --help
 expect "list pow"      0 '~pow          u1        scalar' '' -- bench --list
-expect "list shade"    0 '~shade        bits8' '' -- bench --list
+expect "list shade"    0 '~shade        bits12' '' -- bench --list
+# shade's bits8 computed what bits12 does and was removed; pow keeps its bits8
+if "$SHADECALC" bench --list shade pow | awk '$1 == "shade" && $2 == "bits8" { s = 1 } $1 == "pow" && $2 == "bits8" { p = 1 } END { exit s || !p }'
+then echo "ok   list no shade bits8"; echo pass >>"$E2E_COUNTS"
+else echo "FAIL list no shade bits8: shade lists bits8, or pow does not"; echo fail >>"$E2E_COUNTS"
+fi
 expect "list csv"      0 '~kernel,tier,isas,bound,domain' '' -- bench --list --format csv
 
 # --list as JSON, and only the kernels named (issue 11 §8)

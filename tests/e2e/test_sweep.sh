@@ -225,8 +225,9 @@ verdict "tier bits12 near double"   rows_within "$tier_ref" "$(tier_run --tier b
 verdict "tier accurate near double" rows_within "$tier_ref" "$(tier_run --tier accurate)" 1e-5
 verdict "tier rows differ from highp" test "$(tier_run --tier bits12)" != "$(tier_run)"
 expect "tier: one scene"   2 '' 'error: sweep: --tier bits12: $variables in --light/--brdf change the scene from row to row' -- sweep --var m=1:3:3 --light 'point pos=0,0,3 I=10' --brdf 'blinn-phong m=$m' --tier bits12
-expect "tier: moving l"    2 '' 'error: sweep: --tier bits8: theta_i/phi_i (or the half-vector angles) turn the directional lights row by row' -- sweep --var theta_i=0:80:3 --light 'directional dir=0,0,1' --tier bits8
-expect "tier: highp"       2 '' 'error: sweep: --tier bits8: the batch kernels compute highp' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' -p mediump --tier bits8
-expect "tier: legacy"      2 '' '~model ads: the legacy fixed-function models are not covered' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' --brdf ads --tier bits8
-expect "tier: not an EXPR" 2 '' 'error: sweep: --tier bits8 applies to shading sweeps (--light), not to an EXPR' -- sweep --var x=0:1:3 'x*x' --tier bits8
-expect "tier: unknown"     2 '' '~tier u9: the shading kernel'"'"'s tiers are accurate, bits12, bits8' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' --tier u9
+expect "tier: moving l"    2 '' 'error: sweep: --tier bits12: theta_i/phi_i (or the half-vector angles) turn the directional lights row by row' -- sweep --var theta_i=0:80:3 --light 'directional dir=0,0,1' --tier bits12
+expect "tier: highp"       2 '' 'error: sweep: --tier bits12: the batch kernels compute highp' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' -p mediump --tier bits12
+expect "tier: legacy"      2 '' '~model ads: the legacy fixed-function models are not covered' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' --brdf ads --tier bits12
+expect "tier: not an EXPR" 2 '' 'error: sweep: --tier bits12 applies to shading sweeps (--light), not to an EXPR' -- sweep --var x=0:1:3 'x*x' --tier bits12
+expect "tier: unknown"     2 '' 'error: sweep: --tier u9: expected accurate or bits12' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' --tier u9
+expect "tier: no bits8"    2 '' 'error: sweep: --tier bits8: expected accurate or bits12' -- sweep --var theta_o=0:80:3 --light 'point pos=0,0,3 I=10' --tier bits8

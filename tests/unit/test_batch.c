@@ -504,7 +504,7 @@ static void streaming_stores_give_the_same_bits(void **state)
     (void)state;
     streamed_matches_stored("exp2", "u4");
     streamed_matches_stored("normalize", "u3");
-    streamed_matches_stored("shade", "bits8");
+    streamed_matches_stored("shade", "bits12");
 }
 
 /* Every kernel named in the table exists for every instruction set compiled in. */

@@ -1,4 +1,0 @@
-/* The shading kernel, tier bits8, for AVX2 + FMA (src/simd/kernel_group.h). */
-#include "simd/avx2/vec.h"
-#define SC_KERNEL_GROUP SC_GROUP_SHADE_BITS8
-#include "simd/kernel_group.h"
