@@ -26,4 +26,3 @@ ROWS(atan2, bits22, 2, 1, 0, B22, 0x1p-126,
      "all y, x (inputs y x; beyond 2^126, (0, 0), NaN by the scalar built-in); results below "
      "2^-126 may flush to 0",
      -1e4, 1e4, -1e4, 1e4, NULL, 33)
-ROWS(atan2, bits12, 2, 1, 0, B12, 0x1p-126, "as bits22", -1e4, 1e4, -1e4, 1e4, NULL, 31)

@@ -106,10 +106,10 @@ static inline vf acos_bits12(vf x) { return acos_fast(x, acos_c4, 4); }
 BATCH1(acos_bits22, acos_bits22)
 BATCH1(acos_bits12, acos_bits12)
 
-/* atan u / u as a polynomial in s = u², s in [0, 1/4]: 3 terms (fit error 5.1e-5), 6 terms
- * (5.0e-9). The reduction keeps |u| <= tan(π/8); the interval reaches |u| = 1/2, where a
+/* atan u / u as a polynomial in s = u², s in [0, 1/4]: 6 terms (fit error 5.0e-9; there is no
+ * bits12 tier: with 3 terms, 5.1e-5, it was barely faster than bits22, and gcc -O3 -mavx2
+ * -ffast-math's libmvec atan2f beat it on speed and accuracy). The reduction keeps |u| <= tan(π/8); the interval reaches |u| = 1/2, where a
  * threshold test rounded in the subnormals (n = 1, d = 2 units) can leave u. */
-static const float atan_c3[3] = {0.1561232456726872f, -0.3294578767552555f, 0.9999467415707246f};
 static const float atan_c6[6] = {-0.050662412913701174f, 0.10115525048521459f,
                                  -0.14164254995259587f,  0.1999310497045346f,
                                  -0.33333187824070487f,  0.9999999949625897f};
@@ -148,9 +148,7 @@ static inline vf atan2_fast(vf y, vf x, const float *c, int k)
 }
 
 static inline vf atan2_bits22(vf y, vf x) { return atan2_fast(y, x, atan_c6, 6); }
-static inline vf atan2_bits12(vf y, vf x) { return atan2_fast(y, x, atan_c3, 3); }
 BATCH2(atan2_bits22, atan2_bits22)
-BATCH2(atan2_bits12, atan2_bits12)
 
 /* ---- double lanes: the u1 tier ---- */
 
