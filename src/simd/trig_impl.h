@@ -23,48 +23,44 @@ static const float sin_c5[5] = {2.604920700948167e-06f, -0.00019808936593914233f
  * for |m| < 2^13, and x − m·pio2_hi is exact where it matters (Sterbenz). */
 static const float pio2_hi = 0x1.922p+0f, pio2_lo = -0x1.2aeef4p-18f;
 static const float trig_inv_pi = 0x1.45f306p-2f; /* 1/π */
-/* |x| <= 1000: |m| <= 637, r = x − m·π/2 to about 2^-33 absolute */
-static const float fast_trig_limit = 1000.0f;
+/* 1.5·2^23: for |v| < 2^22, v + round_shifter is rounded to the integer rint(v), which sits in
+ * the low bits of the float's mantissa (so its lowest bit is the parity of rint(v)). */
+static const float round_shifter = 0x1.8p23f;
+/* The fast range |x| <= 1000: |m| <= 637, r = x − m·π/2 to about 2^-33 absolute. Its test is
+ * |x| < the next float above 1000, whose negation also holds for NaN. */
+static const float fast_trig_above = 0x1.f40002p+9f;
 
-/* (−1)^(j/2) sin(x − m·π/2) for the integer m nearest the reduction, |x| <= fast_trig_limit:
- * r = x − m·π/2 in |r| <= π/2 (plus the rounding of m), sin r = r·q(r²). */
-static inline vf sin_of_reduced(vf x, vi m, vi j, const float *c, int n)
+/* (−1)^k sin(x − m·π/2), |x| <= 1000, for the integer m nearest the reduction and k
+ * the integer in the low bits of k_bits: r = x − m·π/2 in |r| <= π/2 (plus the rounding of m),
+ * sin r = r·q(r²), and the sign flipped by adding k's lowest bit at the sign bit. */
+static inline vf sin_of_reduced(vf x, vf mf, vi k_bits, const float *c, int n)
 {
-    vf mf = vi_to_vf(m);
     vf r = vf_fma(mf, vf_set1(-pio2_hi), x);
     r = vf_fma(mf, vf_set1(-pio2_lo), r);
     vf s = vf_mul(r, poly(vf_mul(r, r), c, n));
-    vm negate = vi_eq(vi_and(j, vi_set1(2)), vi_set1(2));
-    return vf_select(negate, vf_mul(s, vf_set1(-1.0f)), s);
+    return vi_as_vf(vi_add(vf_as_vi(s), vi_shl31(k_bits)));
 }
 
-/* x clamped into the fast range (the lanes outside go to the scalar built-in afterwards) */
-static inline vf clamp_trig(vf x)
-{
-    return vf_min(vf_max(x, vf_set1(-fast_trig_limit)), vf_set1(fast_trig_limit));
-}
+/* |x| > 1000 or NaN: the lanes the scalar built-in replaces (the fast lanes compute
+ * garbage there, without undefined behaviour: float operations only). */
+static inline vm outside_trig(vf x) { return vf_nlt(vf_abs(x), vf_set1(fast_trig_above)); }
 
-static inline vm outside_trig(vf x)
-{
-    return vm_or(vf_isnan(x), vf_lt(vf_set1(fast_trig_limit), vf_abs(x)));
-}
-
-/* sin x = (−1)^k sin(x − kπ), k = rint(x/π): m = 2k */
+/* sin x = (−1)^k sin(x − kπ), k = rint(x/π) by round_shifter: m = 2k */
 static inline vf sin_fast(vf x, const float *c, int n)
 {
-    vf xc = clamp_trig(x);
-    vi k = vi_round(vf_mul(xc, vf_set1(trig_inv_pi)));
-    vi m = vi_add(k, k);
-    return fixup1(outside_trig(x), x, sin_of_reduced(xc, m, m, c, n), sc_sinf);
+    vf shifted = vf_fma(x, vf_set1(trig_inv_pi), vf_set1(round_shifter));
+    vf kf = vf_sub(shifted, vf_set1(round_shifter));
+    vf r = sin_of_reduced(x, vf_add(kf, kf), vf_as_vi(shifted), c, n);
+    return fixup1(outside_trig(x), x, r, sc_sinf);
 }
 
-/* cos x = sin(x + π/2) = (−1)^(k+1) sin(x − (k + ½)π), k = rint(x/π − ½): m = 2k + 1 */
+/* cos x = sin(x + π/2) = (−1)^k sin(x − (k − ½)π), k = rint(x/π + ½): m = 2k − 1 */
 static inline vf cos_fast(vf x, const float *c, int n)
 {
-    vf xc = clamp_trig(x);
-    vi k = vi_round(vf_sub(vf_mul(xc, vf_set1(trig_inv_pi)), vf_set1(0.5f)));
-    vi m = vi_add(vi_add(k, k), vi_set1(1));
-    return fixup1(outside_trig(x), x, sin_of_reduced(xc, m, vi_add(m, vi_set1(1)), c, n), sc_cosf);
+    vf shifted = vf_add(vf_fma(x, vf_set1(trig_inv_pi), vf_set1(0.5f)), vf_set1(round_shifter));
+    vf kf = vf_sub(shifted, vf_set1(round_shifter));
+    vf mf = vf_fma(kf, vf_set1(2.0f), vf_set1(-1.0f));
+    return fixup1(outside_trig(x), x, sin_of_reduced(x, mf, vf_as_vi(shifted), c, n), sc_cosf);
 }
 
 static inline vf sin_bits22(vf x) { return sin_fast(x, sin_c5, 5); }
@@ -110,10 +106,10 @@ static inline vf acos_bits12(vf x) { return acos_fast(x, acos_c4, 4); }
 BATCH1(acos_bits22, acos_bits22)
 BATCH1(acos_bits12, acos_bits12)
 
-/* atan u / u as a polynomial in s = u², s in [0, 1/4]: 3 terms (fit error 5.1e-5), 6 terms
- * (5.0e-9). The reduction keeps |u| <= tan(π/8); the interval reaches |u| = 1/2, where a
+/* atan u / u as a polynomial in s = u², s in [0, 1/4]: 6 terms (fit error 5.0e-9; there is no
+ * bits12 tier: with 3 terms, 5.1e-5, it was barely faster than bits22, and gcc -O3 -mavx2
+ * -ffast-math's libmvec atan2f beat it on speed and accuracy). The reduction keeps |u| <= tan(π/8); the interval reaches |u| = 1/2, where a
  * threshold test rounded in the subnormals (n = 1, d = 2 units) can leave u. */
-static const float atan_c3[3] = {0.1561232456726872f, -0.3294578767552555f, 0.9999467415707246f};
 static const float atan_c6[6] = {-0.050662412913701174f, 0.10115525048521459f,
                                  -0.14164254995259587f,  0.1999310497045346f,
                                  -0.33333187824070487f,  0.9999999949625897f};
@@ -152,9 +148,7 @@ static inline vf atan2_fast(vf y, vf x, const float *c, int k)
 }
 
 static inline vf atan2_bits22(vf y, vf x) { return atan2_fast(y, x, atan_c6, 6); }
-static inline vf atan2_bits12(vf y, vf x) { return atan2_fast(y, x, atan_c3, 3); }
 BATCH2(atan2_bits22, atan2_bits22)
-BATCH2(atan2_bits12, atan2_bits12)
 
 /* ---- double lanes: the u1 tier ---- */
 

@@ -54,6 +54,7 @@ static inline vi vi_add(vi a, vi b) { return _mm512_add_epi32(a, b); }
 static inline vi vi_sub(vi a, vi b) { return _mm512_sub_epi32(a, b); }
 static inline vi vi_and(vi a, vi b) { return _mm512_and_si512(a, b); }
 static inline vi vi_shl23(vi a) { return _mm512_slli_epi32(a, 23); }
+static inline vi vi_shl31(vi a) { return _mm512_slli_epi32(a, 31); }
 static inline vi vi_sra23(vi a) { return _mm512_srai_epi32(a, 23); }
 static inline vm vi_eq(vi a, vi b) { return _mm512_cmpeq_epi32_mask(a, b); }
 static inline vf vf_abs(vf a) { return _mm512_abs_ps(a); }

@@ -84,6 +84,7 @@ static inline vi vi_add(vi a, vi b) { return (vi)((vu)a + (vu)b); }
 static inline vi vi_sub(vi a, vi b) { return (vi)((vu)a - (vu)b); }
 static inline vi vi_and(vi a, vi b) { return a & b; }
 static inline vi vi_shl23(vi a) { return (vi)((vu)a << 23); }
+static inline vi vi_shl31(vi a) { return (vi)((vu)a << 31); }
 static inline vi vi_sra23(vi a) { return a >> 23; } /* arithmetic, as gcc and clang shift */
 static inline vm vi_eq(vi a, vi b) { return a == b; }
 static inline vf vf_abs(vf a) { return (vf)((vi)a & vi_set1(0x7fffffff)); }

@@ -51,6 +51,7 @@ static inline vi vi_add(vi a, vi b) { return _mm_add_epi32(a, b); }
 static inline vi vi_sub(vi a, vi b) { return _mm_sub_epi32(a, b); }
 static inline vi vi_and(vi a, vi b) { return _mm_and_si128(a, b); }
 static inline vi vi_shl23(vi a) { return _mm_slli_epi32(a, 23); }
+static inline vi vi_shl31(vi a) { return _mm_slli_epi32(a, 31); }
 static inline vi vi_sra23(vi a) { return _mm_srai_epi32(a, 23); }
 static inline vm vi_eq(vi a, vi b) { return _mm_castsi128_ps(_mm_cmpeq_epi32(a, b)); }
 static inline vf vf_abs(vf a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
