@@ -179,7 +179,17 @@ static SC_INLINE vf atten_windowed(int tier, vf r, const func_uniforms *u)
     return vf_mul(vf_mul(w, w), inverse_square(r));
 }
 
-FUNC_KERNEL(atten_none_u1, ACCURATE, atten_none, sc_uniforms_atten, SC_ATTEN_NONE)
+/* f(r) = 1 reads no input: a fill, two vectors a call (one a call reloaded the constant for
+ * every store and ran at half the store rate) */
+static SC_INLINE void atten_none_u1_lane(const float *const *in, float *const *out, size_t i,
+                                         const void *u)
+{
+    (void)in, (void)u;
+    vf_storeu(out[0] + i, vf_set1(1.0f));
+    vf_storeu(out[0] + i + VW, vf_set1(1.0f));
+}
+KERNEL(atten_none_u1);
+KERNEL(atten_none_u1) { run_wide(a, 1, 1, atten_none_u1_lane, 2); }
 FUNC_KERNEL(atten_invsq_u2, ACCURATE, atten_invsq, sc_uniforms_atten, SC_ATTEN_INVERSE_SQUARE)
 FUNC_KERNEL(atten_clq_u3, ACCURATE, atten_clq, sc_uniforms_atten, SC_ATTEN_CLQ)
 FUNC_KERNEL(atten_window_u2, ACCURATE, atten_window, sc_uniforms_atten, SC_ATTEN_WINDOW)
