@@ -1,5 +1,6 @@
 /* The float uniforms of the batch kernels from the double model types (src/simd/uniforms.h):
  * computed once, in double where it matters, rounded to float once. */
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -13,15 +14,21 @@ static const double radians = 3.14159265358979323846 / 180.0;
 
 /* ---- attenuation and spot ---- */
 
+static int min_int(int a, int b) { return a < b ? a : b; }
+
 void sc_uniforms_atten(const sc_atten *a, sc_atten_kind kind, sc_func_uniforms *u)
 {
     memset(u, 0, sizeof *u);
     switch (kind) {
     case SC_ATTEN_CLQ: *u = (sc_func_uniforms){{(float)a->sc, (float)a->sl, (float)a->sq}}; break;
-    case SC_ATTEN_WINDOW:
-        *u = (sc_func_uniforms){
-            {(float)a->r_start, (float)a->r_end, (float)(a->r_end - a->r_start)}};
+    case SC_ATTEN_WINDOW: { /* the step w = 0 never reaches the ramp: 1/w = inf unused */
+        float w = (float)(a->r_end - a->r_start), s = 1.0f;
+        int e = 0;
+        if (w > 0.0f && w <= FLT_MAX)
+            s = ldexpf(1.0f, min_int(1 - (frexpf(w, &e), e), FLT_MAX_EXP - 2)); /* w = f 2^e */
+        *u = (sc_func_uniforms){{(float)a->r_start, (float)a->r_end, w * s, 1.0f / (w * s), s}};
         break;
+    }
     case SC_ATTEN_PIXAR: { /* flat where f_c = f_max: k0 = 0 */
         double k0 = log(a->f_c / a->f_max);
         *u = (sc_func_uniforms){{(float)a->f_c, (float)a->r_c, (float)a->s_e, (float)a->f_max,

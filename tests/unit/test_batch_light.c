@@ -245,6 +245,20 @@ static void attenuation_edges(void **state)
     check_function("atten_pixar", &p, 20.0, points, n, "f_c < f_max");
 }
 
+/* Windows whose width r_end − r_start is subnormal in float (1/w overflows) or far above 1:
+ * the ramp's quotient still within the bound on every row (the kernels scale it to [1, 2)). */
+static void window_widths_far_from_one(void **state)
+{
+    (void)state;
+    sc_atten p = sc_batch_test_atten;
+    p.r_start = 0x1p-140, p.r_end = 0x1p-138; /* w = 3 2^-140 */
+    const float tiny[] = {0x1p-140f, 0x1.8p-140f, 0x1p-139f, 0x1.8p-139f, 0x1.fffffcp-139f};
+    check_function("atten_window", &p, 0x1p-137, tiny, 5, "subnormal width");
+    p.r_start = 0x1p100, p.r_end = 0x1.8p120;
+    const float huge[] = {0x1p100f, 0x1.000002p100f, 0x1p120f, 0x1.7ffffep120f};
+    check_function("atten_window", &p, 0x1p121, huge, 4, "width 2^120");
+}
+
 /* By hand: the step, the flat pixar, r = 0 finite. */
 static void attenuation_by_hand(void **state)
 {
@@ -968,6 +982,7 @@ int main(void)
         cmocka_unit_test(brdf_parameter_extremes_within_bounds),
         cmocka_unit_test(attenuation_by_hand),
         cmocka_unit_test(attenuation_edges),
+        cmocka_unit_test(window_widths_far_from_one),
         cmocka_unit_test(pixar_integer_exponents_round_once),
         cmocka_unit_test(spot_by_hand),
         cmocka_unit_test(spot_edges),
