@@ -195,6 +195,12 @@ static SC_INLINE vf v3_dot(v3 a, v3 b)
 {
     return vf_fma(a.x, b.x, vf_fma(a.y, b.y, vf_mul(a.z, b.z)));
 }
+
+/* a·b in the order C's a.x*b.x + a.y*b.y + a.z*b.z contracts to: x first */
+static SC_INLINE vf v3_dot_x_first(v3 a, v3 b)
+{
+    return vf_fma(a.z, b.z, vf_fma(a.y, b.y, vf_mul(a.x, b.x)));
+}
 static SC_INLINE v3 v3_scale(v3 a, vf s)
 {
     return (v3){vf_mul(a.x, s), vf_mul(a.y, s), vf_mul(a.z, s)};
@@ -253,7 +259,7 @@ static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, 
 static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i, const void *p)
 {
     (void)p;
-    vf_storeu(out[0] + i, v3_dot(v3_load(in, 0, i), v3_load(in, 3, i)));
+    vf_storeu(out[0] + i, v3_dot_x_first(v3_load(in, 0, i), v3_load(in, 3, i)));
 }
 
 /* reflect(I, N) = I − 2 (N·I) N (GLSL ES; N unit) */
@@ -272,7 +278,7 @@ static SC_INLINE void length_lane(const float *const *in, float *const *out, siz
 {
     (void)p;
     v3 a = v3_load(in, 0, i);
-    vf_storeu(out[0] + i, vf_sqrt(v3_dot(a, a)));
+    vf_storeu(out[0] + i, vf_sqrt(v3_dot_x_first(a, a)));
 }
 
 #define TIERED_LANE(name, body_fn, tier)                                                           \
