@@ -105,9 +105,19 @@ static int at_hard_edge(const sc_light *lt, double cos_s)
     return fabs(cos_s - edge) < 0x1p-16;
 }
 
+/* E_L of a light before its spot factor: the factor's error is absolute in cos θ_s (a rounding
+ * of l moves cos θ_s by a few 2^-24), so where a smooth cone falls to 0 at its outer edge the
+ * factor's relative error grows without bound: 2 δ/(cos θ_s − cos θ_u) for smoothstep. With
+ * the spotted E the allowance vanished there, and a lobe that lit the point mostly through such
+ * a spot broke the bound (1.16 times it at m = 128, cos θ_s 0.006 inside the 40° cone). */
+static double unspotted_E(const sc_light *lt, const sc_light_sample *ls, int c)
+{
+    return lt->kind == SC_LIGHT_SPOT ? lt->intensity[c] * ls->f_d : ls->E[c];
+}
+
 /* out[0..2] the radiance of the plan's scene (sc_shade's equation in double, on the float
  * inputs); out[3] the scale of the allowance: ambient plus Σ E (c_diff/π + |diffuse| +
- * specular) without the cosine (an error of ε in n·l, inevitable in float, moves the result by
+ * specular) without the cosine, a spot's E without its spot factor (unspotted_E) (an error of ε in n·l, inevitable in float, moves the result by
  * about ε E f); +Inf (outside the stated domain) at a hard edge of a spot cone. */
 int sc_batch_shade_at(const sc_scene *s, const sc_batch_args *a, size_t i, double out[4],
                       sc_light_terms *terms)
@@ -151,8 +161,9 @@ void sc_batch_ref_shade(const sc_batch_args *a, size_t i, double *out)
         if (at_hard_edge(&s->lights[k], t->light.cos_s))
             scale = INFINITY;
         for (int c = 0; c < 3; c++)
-            scale = fmax(scale, t->light.E[c] * (b->diff[c] / 3.141592653589793 +
-                                                 fabs(t->brdf.diffuse[c]) + t->brdf.specular[c]));
+            scale = fmax(scale, unspotted_E(&s->lights[k], &t->light, c) *
+                                    (b->diff[c] / 3.141592653589793 + fabs(t->brdf.diffuse[c]) +
+                                     t->brdf.specular[c]));
     }
     out[3] += scale;
 }
