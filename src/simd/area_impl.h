@@ -23,10 +23,7 @@
 static SC_INLINE vf area_angle(vf y, vf x)
 {
     vf ax = vf_abs(x);
-    vf lo = vf_min(ax, y), hi = vf_max(vf_max(ax, y), vf_set1(FLT_MIN));
-    vf a = atan_ratio(lo, hi, atan_c6, 6);
-    a = vf_select(vf_lt(ax, y), minus_from(a, half_pi_hi, half_pi_lo), a);
-    return vf_select(vf_lt(x, vf_set1(0.0f)), minus_from(a, pi_hi, pi_lo), a);
+    return upper_half_angle(ax, y, x, vf_max(vf_max(ax, y), vf_set1(FLT_MIN)));
 }
 
 static SC_INLINE vf area_acos(vf x) { return acos_fast(x, acos_c9, 9); }

@@ -108,8 +108,9 @@ BATCH1(acos_bits12, acos_bits12)
 
 /* atan u / u as a polynomial in s = u², s in [0, 1/4]: 6 terms (fit error 5.0e-9; there is no
  * bits12 tier: with 3 terms, 5.1e-5, it was barely faster than bits22, and gcc -O3 -mavx2
- * -ffast-math's libmvec atan2f beat it on speed and accuracy). The reduction keeps |u| <= tan(π/8); the interval reaches |u| = 1/2, where a
- * threshold test rounded in the subnormals (n = 1, d = 2 units) can leave u. */
+ * -ffast-math's libmvec atan2f beat it on speed and accuracy). The reduction keeps
+ * |u| <= tan(π/8); the interval reaches |u| = 1/2, where a threshold test rounded in the
+ * subnormals (n = 1, d = 2 units) can leave u. */
 static const float atan_c6[6] = {-0.050662412913701174f, 0.10115525048521459f,
                                  -0.14164254995259587f,  0.1999310497045346f,
                                  -0.33333187824070487f,  0.9999999949625897f};
@@ -123,31 +124,36 @@ static inline vf with_sign_of(vf a, vf y)
 
 /* atan(n/d) for 0 <= n <= d: above tan(π/8), π/4 + atan((n − d)/(n + d)), which cancels
  * down to 0.39 (hence π/4 in two parts); then atan u = u·q(u²). One division. */
-static inline vf atan_ratio(vf n, vf d, const float *c, int k)
+static inline vf atan_ratio(vf n, vf d)
 {
     vm big = vf_lt(d, vf_mul(n, vf_set1(cot_pi_8_f)));
     vf u = vf_div(vf_select(big, vf_sub(n, d), n), vf_select(big, vf_add(n, d), d));
     vf base_hi = vf_select(big, vf_set1(quarter_pi_hi), vf_set1(0.0f));
     vf base_lo = vf_select(big, vf_set1(quarter_pi_lo), vf_set1(0.0f));
-    return vf_add(vf_fma(u, poly(vf_mul(u, u), c, k), base_lo), base_hi);
+    return vf_add(vf_fma(u, poly(vf_mul(u, u), atan_c6, 6), base_lo), base_hi);
+}
+
+/* The angle of (x, y) for |x| = ax, y >= 0 of magnitude ay, in [0, π]: atan of the smaller
+ * over the larger, d = max(ax, ay) (or a floor of it), placed in its quadrant. */
+static inline vf upper_half_angle(vf ax, vf ay, vf x, vf d)
+{
+    vf a = atan_ratio(vf_min(ax, ay), d);
+    a = vf_select(vf_lt(ax, ay), minus_from(a, half_pi_hi, half_pi_lo), a);
+    return vf_select(vf_lt(x, vf_set1(0.0f)), minus_from(a, pi_hi, pi_lo), a);
 }
 
 /* atan2(y, x) from the angle of (|x|, |y|) in [0, π/2], placed in its quadrant. Lanes with
  * NaN, (0, 0), or a magnitude beyond 2^126 (where n + d could overflow; the infinities) go to
  * the scalar built-in. */
-static inline vf atan2_fast(vf y, vf x, const float *c, int k)
+static inline vf atan2_bits22(vf y, vf x)
 {
-    vf ax = vf_abs(x), ay = vf_abs(y);
-    vf n = vf_min(ax, ay), d = vf_max(ax, ay);
-    vf a = atan_ratio(n, d, c, k);
-    a = vf_select(vf_lt(ax, ay), minus_from(a, half_pi_hi, half_pi_lo), a);
-    a = vf_select(vf_lt(x, vf_set1(0.0f)), minus_from(a, pi_hi, pi_lo), a);
+    vf ax = vf_abs(x), ay = vf_abs(y), d = vf_max(ax, ay);
+    vf a = upper_half_angle(ax, ay, x, d);
     vm special = vm_or(vm_or(vf_isnan(x), vf_isnan(y)), vf_eq(d, vf_set1(0.0f)));
     special = vm_or(special, vf_lt(vf_set1(0x1p126f), d));
     return fixup2(special, y, x, with_sign_of(a, y), sc_atan2f);
 }
 
-static inline vf atan2_bits22(vf y, vf x) { return atan2_fast(y, x, atan_c6, 6); }
 BATCH2(atan2_bits22, atan2_bits22)
 
 /* ---- double lanes: the u1 tier ---- */
