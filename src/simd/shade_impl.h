@@ -256,20 +256,53 @@ static SC_INLINE v3 v3_normalize_dd(int tier, v3 a, vf dd)
 
 static SC_INLINE v3 v3_normalize(int tier, v3 a) { return v3_normalize_dd(tier, a, v3_dot(a, a)); }
 
+/* Half a vector of vec3s in double lanes: components j, j+1, j+2 of the arrays at element i,
+ * the first (half 0) or second (half 1) VW/2 elements */
+typedef struct {
+    vd x, y, z;
+} d3;
+
+static SC_INLINE d3 d3_load(const float *const *in, int j, size_t i, int half)
+{
+    size_t e = i + (size_t)half * (VW / 2);
+    return (d3){vd_load_floats(in[j] + e), vd_load_floats(in[j + 1] + e),
+                vd_load_floats(in[j + 2] + e)};
+}
+
+/* a·b of floats in double: each product exact (24 + 24 bits), the two sums rounded to 53 bits,
+ * so the float result is the exact dot product rounded once, but where the sum cancels to
+ * below 2^-29 Σ|a_k b_k|. Without FMA a product and a sum round as the FMA does (the product
+ * is exact): every instruction set gives the same bits. */
+static SC_INLINE vd d3_dot(d3 a, d3 b)
+{
+    return vd_add(vd_add(vd_mul(a.x, b.x), vd_mul(a.y, b.y)), vd_mul(a.z, b.z));
+}
+
 static SC_INLINE void dot_lane(const float *const *in, float *const *out, size_t i, const void *p)
 {
     (void)p;
-    vf_storeu(out[0] + i, v3_dot_x_first(v3_load(in, 0, i), v3_load(in, 3, i)));
+    vd lo = d3_dot(d3_load(in, 0, i, 0), d3_load(in, 3, i, 0));
+    vd hi = d3_dot(d3_load(in, 0, i, 1), d3_load(in, 3, i, 1));
+    vf_storeu(out[0] + i, vf_from_vd(lo, hi));
 }
 
-/* reflect(I, N) = I − 2 (N·I) N (GLSL ES; N unit) */
+/* reflect(I, N) = I − 2 (N·I) N (GLSL ES; N unit) in double: k = −2 N·I rounded to 53 bits,
+ * I + k N with each product and sum rounded to 53 bits (no FMA: the same bits on every
+ * instruction set), then once to float */
+static SC_INLINE d3 d3_reflect(d3 i, d3 n)
+{
+    vd k = vd_mul(vd_set1(-2.0), d3_dot(n, i));
+    return (d3){vd_add(i.x, vd_mul(k, n.x)), vd_add(i.y, vd_mul(k, n.y)),
+                vd_add(i.z, vd_mul(k, n.z))};
+}
+
 static SC_INLINE void reflect_lane(const float *const *in, float *const *out, size_t e,
                                    const void *p)
 {
     (void)p;
-    v3 i = v3_load(in, 0, e), n = v3_load(in, 3, e);
-    vf k = vf_mul(vf_set1(-2.0f), v3_dot(n, i));
-    v3_store((v3){vf_fma(k, n.x, i.x), vf_fma(k, n.y, i.y), vf_fma(k, n.z, i.z)}, out, e);
+    d3 lo = d3_reflect(d3_load(in, 0, e, 0), d3_load(in, 3, e, 0));
+    d3 hi = d3_reflect(d3_load(in, 0, e, 1), d3_load(in, 3, e, 1));
+    v3_store((v3){vf_from_vd(lo.x, hi.x), vf_from_vd(lo.y, hi.y), vf_from_vd(lo.z, hi.z)}, out, e);
 }
 
 /* |a|: one square root, rounded once (the rsqrt tiers were slower and less accurate) */

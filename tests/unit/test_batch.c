@@ -295,11 +295,13 @@ static void every_stated_bound_holds(void **state)
 
 /* 1 if the SIMD kernel runs the scalar kernel's algorithm with the same roundings: SSE4.1
  * has no FMA, and its double lanes are the scalar kernels' two; the scalar lane's estimates
- * are not rsqrtps/rcpps. */
+ * are not rsqrtps/rcpps. dot and reflect work in double lanes with no FMA: the same bits on
+ * every instruction set. */
 static int same_bits_expected(const sc_batch_entry *e)
 {
+    if (strcmp(e->kernel, "dot") == 0 || strcmp(e->kernel, "reflect") == 0)
+        return 1;
     return e->isa == SC_ISA_SSE41 && strcmp(e->kernel, "inversesqrt") != 0 &&
-           strcmp(e->kernel, "dot") != 0 && strcmp(e->kernel, "reflect") != 0 &&
            strcmp(e->kernel, "normalize") != 0 && strcmp(e->kernel, "length") != 0 &&
            strcmp(e->kernel, "shade") != 0 && strcmp(e->kernel, "brdf") != 0 &&
            strncmp(e->kernel, "area_", 5) != 0;
@@ -570,6 +572,72 @@ static void log2_u4_with_fma_is_within_1_5_ulp_around_1(void **state)
     }
 }
 
+/* A random float in [-4, 4) */
+static float random_component(void)
+{
+    return (float)((double)(next() >> 11) * 0x1p-53 * 8.0 - 4.0);
+}
+
+/* |got − exact| within half an ulp of got plus 2^-50 · scale: the double lanes' roundings
+ * (2^-53 each, relative to the terms they sum) and the final rounding to float */
+static void check_rounded_once(const char *what, const sc_batch_entry *e, float got,
+                               long double exact, long double scale)
+{
+    float ulp = nextafterf(fabsf(got), INFINITY) - fabsf(got);
+    long double allowed = 0.5L * ulp + 0x1p-50L * scale;
+    if (fabsl((long double)got - exact) > allowed)
+        fail_msg("%s %s: %a against %La (allowed %Lg)", what, sc_isa_name(e->isa), (double)got,
+                 exact, allowed);
+}
+
+/* dot and reflect compute in double lanes: each result is the exact one rounded once to float,
+ * up to 2^-50 of the terms' magnitudes (the float formulas err by 2^-24 of them). Half of
+ * the pairs are nearly orthogonal (b loses its component along a), where the sum cancels.
+ * Exact: products of floats are exact in long double, sums off by 2^-64. */
+static void dot_and_reflect_round_once(void **state)
+{
+    (void)state;
+    enum { N = 1 << 14 };
+    static float in[6][N], out[3][N];
+    reseed(hash_string(fnv_basis, "dot_and_reflect_round_once"));
+    for (size_t i = 0; i < N; i++) {
+        for (int j = 0; j < 6; j++)
+            in[j][i] = random_component();
+        if (i % 2) { /* b −= (a·b / a·a) a, in float: a·b ≈ 0 */
+            float ab = in[0][i] * in[3][i] + in[1][i] * in[4][i] + in[2][i] * in[5][i];
+            float aa = in[0][i] * in[0][i] + in[1][i] * in[1][i] + in[2][i] * in[2][i];
+            for (int c = 0; c < 3; c++)
+                in[3 + c][i] -= ab / aa * in[c][i];
+        }
+    }
+    for (int k = 0; k < sc_batch_count; k++) {
+        const sc_batch_entry *e = &sc_batch_table[k];
+        int is_dot = strcmp(e->kernel, "dot") == 0;
+        if ((!is_dot && strcmp(e->kernel, "reflect") != 0) || !sc_isa_supported(e->isa))
+            continue;
+        sc_batch_args a = {.in = {in[0], in[1], in[2], in[3], in[4], in[5]},
+                           .out = {out[0], out[1], out[2]},
+                           .n = N};
+        e->fn(&a);
+        for (size_t i = 0; i < N; i++) {
+            long double d = 0, abs_sum = 0;
+            for (int c = 0; c < 3; c++) {
+                long double p = (long double)in[c][i] * in[3 + c][i];
+                d += p, abs_sum += fabsl(p);
+            }
+            if (is_dot) {
+                check_rounded_once("dot", e, out[0][i], d, abs_sum);
+                continue;
+            }
+            for (int c = 0; c < 3; c++) { /* reflect(I = in 0..2, N = in 3..5) */
+                long double n_c = in[3 + c][i];
+                check_rounded_once("reflect", e, out[c][i], in[c][i] - 2 * d * n_c,
+                                   fabsl((long double)in[c][i]) + 2 * abs_sum * fabsl(n_c));
+            }
+        }
+    }
+}
+
 int main(void)
 {
     make_scenes();
@@ -580,6 +648,7 @@ int main(void)
         cmocka_unit_test(streaming_stores_give_the_same_bits),
         cmocka_unit_test(every_stated_bound_holds),
         cmocka_unit_test(log2_u4_with_fma_is_within_1_5_ulp_around_1),
+        cmocka_unit_test(dot_and_reflect_round_once),
     };
     int failed = cmocka_run_group_tests_name("batch", tests, NULL, NULL);
     free_scenes();

@@ -60,6 +60,8 @@ static inline vf vf_abs(vf a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a
 /* doubles: the low and high halves of a vf */
 static inline vd vd_from_lo(vf x) { return _mm256_cvtps_pd(_mm256_castps256_ps128(x)); }
 static inline vd vd_from_hi(vf x) { return _mm256_cvtps_pd(_mm256_extractf128_ps(x, 1)); }
+/* VW/2 floats at p, as doubles: a load folded into the conversion */
+static inline vd vd_load_floats(const float *p) { return _mm256_cvtps_pd(_mm_loadu_ps(p)); }
 static inline vf vf_from_vd(vd lo, vd hi)
 {
     return _mm256_set_m128(_mm256_cvtpd_ps(hi), _mm256_cvtpd_ps(lo));

@@ -65,6 +65,8 @@ static inline vd vd_from_hi(vf x)
 {
     return _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(x), 1)));
 }
+/* VW/2 floats at p, as doubles: a load folded into the conversion */
+static inline vd vd_load_floats(const float *p) { return _mm512_cvtps_pd(_mm256_loadu_ps(p)); }
 static inline vf vf_from_vd(vd lo, vd hi)
 {
     __m256 l = _mm512_cvtpd_ps(lo), h = _mm512_cvtpd_ps(hi);

@@ -93,6 +93,8 @@ static inline vf vf_abs(vf a) { return (vf)((vi)a & vi_set1(0x7fffffff)); }
 
 static inline vd vd_from_lo(vf x) { return (vd){x[0], x[1]}; }
 static inline vd vd_from_hi(vf x) { return (vd){x[2], x[3]}; }
+/* VW/2 floats at p, as doubles */
+static inline vd vd_load_floats(const float *p) { return (vd){p[0], p[1]}; }
 /* each lane rounded once to float, as cvtpd2ps */
 static inline vf vf_from_vd(vd lo, vd hi)
 {

@@ -58,6 +58,11 @@ static inline vf vf_abs(vf a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
 
 static inline vd vd_from_lo(vf x) { return _mm_cvtps_pd(x); }
 static inline vd vd_from_hi(vf x) { return _mm_cvtps_pd(_mm_movehl_ps(x, x)); }
+/* VW/2 floats at p, as doubles */
+static inline vd vd_load_floats(const float *p)
+{
+    return _mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd((const double *)(const void *)p)));
+}
 static inline vf vf_from_vd(vd lo, vd hi)
 {
     return _mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi));
