@@ -4,7 +4,8 @@
  * tests/unit/scale.h), and the edge rules of light.h (r = 0 finite,
  * f_c = f_max flat, r_start = r_end a step, cutoff 180, inner = outer a hard edge, exponent 0),
  * on every tier and instruction set, against the library's double functions (the references of
- * src/batch/reference_light.c) within each row's stated bound. */
+ * src/batch/reference_light.c) within each row's stated bound. SHADECALC_BATCH_SEED=k, as for
+ * tests/unit/test_batch.c, draws another set of random inputs (a failure names the seed). */
 #include <float.h>
 #include <pthread.h>
 #include <math.h>
@@ -32,6 +33,17 @@ enum { N_BRDF = 2003, N_FUNC = 4001 }; /* not multiples of 8: the tails run too 
 static const double pi = 3.14159265358979323846;
 
 static uint64_t rng = 0x2545F4914F6CDD1DULL;
+
+/* rng mixed with SHADECALC_BATCH_SEED when it is set (the golden-ratio multiple: seeds 1, 2, …
+ * far apart) */
+static void seed_from_environment(void)
+{
+    const char *env = getenv("SHADECALC_BATCH_SEED");
+    if (env) {
+        rng ^= strtoull(env, NULL, 0) * 0x9E3779B97F4A7C15ULL;
+        print_message("SHADECALC_BATCH_SEED=%s\n", env);
+    }
+}
 
 /* Runs every tier and instruction set of `kernel` on the inputs in b (references already in
  * b->ref) and fails on an error beyond a row's bound or a NaN. */
@@ -1022,6 +1034,7 @@ static void one_plan_many_threads(void **state)
 
 int main(void)
 {
+    seed_from_environment();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(brdf_normal_incidence_by_hand),
         cmocka_unit_test(every_brdf_form_within_bounds),
