@@ -179,17 +179,43 @@ static double ball_irradiance(const double c[3], double R, const double n[3])
     return sphere_irradiance(area_dot(n, c) / d, (R / d) * (R / d));
 }
 
+/* Whether pos is inside or on a sphere's ball or a tube's capsule (within R of the segment
+ * p0–p1), where the whole sky above the horizon is the light (docs/formulas.md §5.1). */
+static int inside_emitter(const sc_light *light, const double pos[3])
+{
+    double q[3], R = light->area.radius;
+    area_centre(light, q);
+    for (int i = 0; i < 3; i++)
+        q[i] -= pos[i];
+    if (light->kind == SC_LIGHT_TUBE) { /* q = p0 + t (p1 − p0) − pos, t the nearest in [0, 1] */
+        double L0[3], Ld[3];
+        for (int i = 0; i < 3; i++) {
+            L0[i] = light->area.p0[i] - pos[i];
+            Ld[i] = light->area.p1[i] - light->area.p0[i];
+        }
+        double dd = area_dot(Ld, Ld);
+        double t = dd > 0.0 ? fmin(1.0, fmax(0.0, -area_dot(L0, Ld) / dd)) : 0.0;
+        for (int i = 0; i < 3; i++)
+            q[i] = L0[i] + t * Ld[i];
+    }
+    return sqrt(area_dot(q, q)) <= R;
+}
+
 /* The diffuse irradiance of the emitter over L_e: a sphere's exactly; a tube's as its cylinder,
  * a line of width 2R (Karis 2013's closed form of ∫ n·x/‖x‖³ along the segment), plus its two
- * hemispherical ends as one ball at its centre; π from inside. */
-static double diffuse_irradiance(const sc_light *light, const double pos[3], const double n[3])
+ * hemispherical ends as one ball at its centre; π from inside (`inside`, inside_emitter: the
+ * line's form diverges on the axis). */
+static double diffuse_irradiance(const sc_light *light, const double pos[3], const double n[3],
+                                 int inside)
 {
     double c[3], R = light->area.radius;
+    if (inside)
+        return AREA_PI;
     area_centre(light, c);
     for (int i = 0; i < 3; i++)
         c[i] -= pos[i];
     double ball = ball_irradiance(c, R, n);
-    if (light->kind != SC_LIGHT_TUBE || ball == AREA_PI)
+    if (light->kind != SC_LIGHT_TUBE)
         return ball;
     double L0[3], L1[3];
     for (int i = 0; i < 3; i++) {
@@ -263,7 +289,8 @@ static void representative_method(const sc_light *light, area_integrand *g, cons
         c[i] -= pos[i];
     diffuse_direction(c, n, ld);
     sc_brdf_eval(SC_DOUBLE, g->b, g->frame, ld, v, &td);
-    double E_diffuse = diffuse_irradiance(light, pos, n);
+    int inside = inside_emitter(light, pos);
+    double E_diffuse = diffuse_irradiance(light, pos, n, inside);
     double nv = area_dot(n, v);
     for (int i = 0; i < 3; i++)
         r[i] = 2.0 * nv * n[i] - v[i];
@@ -274,13 +301,13 @@ static void representative_method(const sc_light *light, area_integrand *g, cons
     double cl = sqrt(area_dot(C, C)), toward = cl > 0.0 ? fmin(1.0, R / cl) : 0.0;
     for (int i = 0; i < 3; i++)
         P[i] = L[i] + C[i] * toward;
-    if (d <= R || !(area_unit(P, ls) > 0.0)) /* inside: the whole sky is the light */
+    if (inside || !(area_unit(P, ls) > 0.0)) /* inside: the whole sky is the light */
         memcpy(ls, r, sizeof ls);
     sc_brdf_eval(SC_DOUBLE, g->b, g->frame, ls, v, &ts);
     double cos_s = ts.cos_i > 0.0 ? ts.cos_i : 0.0;
     double along = R + (light->kind == SC_LIGHT_TUBE ? 0.5 * tube_length(light) : 0.0);
     /* the emitter's energy: its irradiance on a plane facing the representative point */
-    double E_spec = diffuse_irradiance(light, pos, ls);
+    double E_spec = diffuse_irradiance(light, pos, ls, inside);
     double spec = energy_normalisation(g->b, R, along, d) * E_spec * cos_s;
     for (int i = 0; i < 3; i++)
         out->L[i] = g->Le[i] * (td.diffuse[i] * E_diffuse + ts.specular[i] * spec);

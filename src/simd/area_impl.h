@@ -55,14 +55,28 @@ static SC_INLINE vf sphere_irradiance(vf ct, vf d, vf R)
     return vf_select(clipped, vf_max(e, zero), above);
 }
 
+/* The lanes whose point is inside or on the sphere's ball or the tube's capsule (within R of
+ * the segment p0–p1), where the whole sky above the horizon is the light (light/area.c's
+ * inside_emitter). dc: the distance to the centre. */
+static SC_INLINE vm inside_emitter(sc_light_kind kind, const sc_area_uniforms *a, vf dc, v3 p)
+{
+    vf R = vf_set1(a->radius);
+    if (kind != SC_LIGHT_TUBE)
+        return vf_le(dc, R);
+    v3 l0 = v3_sub(v3_set1(a->p0), p), ld = v3_set1(a->axis);
+    vf t = area_ratio(vf_sub(vf_set1(0.0f), v3_dot(l0, ld)), v3_dot(ld, ld));
+    v3 q = v3_add(l0, v3_scale(ld, vf_clamp(t, 0.0f, 1.0f)));
+    return vf_le(area_length(v3_dot(q, q)), R);
+}
+
 /* The irradiance of a sphere light, or a tube's (its cylinder as a line of width 2R, Karis
  * 2013, plus its ends as one ball at its centre), on a plane of unit normal w at the point,
- * over L_e; π inside the ball about the centre. c: centre − point, dc its length. */
+ * over L_e; π in the lanes `inside` the emitter (inside_emitter: the line's form diverges on
+ * the axis). c: centre − point, dc its length. */
 static SC_INLINE vf area_irradiance(sc_light_kind kind, const sc_area_uniforms *a, v3 w, v3 c,
-                                    vf dc, v3 p)
+                                    vf dc, v3 p, vm inside)
 {
     vf R = vf_set1(a->radius), zero = vf_set1(0.0f);
-    vm inside = vf_le(dc, R);
     vf e = sphere_irradiance(area_ratio(v3_dot(w, c), dc), dc, R);
     if (kind == SC_LIGHT_TUBE) { /* (w·L0/|L0| + w·L1/|L1|) / (|L0||L1| + L0·L1) */
         v3 l0 = v3_sub(v3_set1(a->p0), p), l1 = v3_add(l0, v3_set1(a->axis));
@@ -118,7 +132,8 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
     vf zero = vf_set1(0.0f);
     v3 c = v3_sub(v3_set1(a->centre), p);
     vf dc = area_length(v3_dot(c, c));
-    vf e_diffuse = area_irradiance(kind, a, n, c, dc, p);
+    vm inside = inside_emitter(kind, a, dc, p);
+    vf e_diffuse = area_irradiance(kind, a, n, c, dc, p, inside);
     v3 out = v3_scale(lv->diff, e_diffuse);
     if (lobe != SC_LOBE_NONE) {
         v3 r = v3_sub(v3_scale(n, vf_mul(vf_set1(2.0f), nv)), v);
@@ -129,14 +144,14 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
         vf toward = vf_min(vf_set1(1.0f), area_ratio(vf_set1(a->radius), cl));
         v3 P = v3_add(L, v3_scale(C, vf_select(vf_lt(zero, cl), toward, zero)));
         vf pp = v3_dot(P, P);
-        vm at_r = vm_or(vf_le(d, vf_set1(a->radius)), vf_eq(pp, zero)); /* inside: l_s = r */
+        vm at_r = vm_or(inside, vf_eq(pp, zero)); /* inside: l_s = r */
         v3 ls = v3_select(at_r, r, v3_normalize_dd(tier, P, pp));
         vf cos_s = v3_dot(n, ls);
         vm lit = vf_lt(zero, cos_s);
         vf sp = vf_select(lit, own_specular(tier, lobe, sv, n, v, ls, cos_s, nv, v3_dot(v, ls)),
                           zero);
         vf w = vf_mul(vf_mul(sp, energy_normalisation(lobe, sv, a, d)),
-                      vf_mul(area_irradiance(kind, a, ls, c, dc, p), vf_max(cos_s, zero)));
+                      vf_mul(area_irradiance(kind, a, ls, c, dc, p, inside), vf_max(cos_s, zero)));
         v3 ks = lv->spec;
         out = (v3){vf_fma(ks.x, w, out.x), vf_fma(ks.y, w, out.y), vf_fma(ks.z, w, out.z)};
     }

@@ -309,18 +309,25 @@ static void exact_limits(void **state)
                shade_area(&ball, SC_AREA_REFERENCE, ggx, n, v, NULL), 1e-6);
 }
 
-/* Inside a sphere or tube: L_e times the directional albedo (Lambert: c_diff); behind, zero
- * size, in the plane of a disk or rect: 0; never NaN. */
+/* Inside a sphere or tube: L_e times the directional albedo (Lambert: c_diff), by the reference
+ * and the representative point (also inside a tube's capsule far from the ball about its
+ * centre: an end cap, the cylinder); behind, zero size, in the plane of a disk or rect: 0;
+ * never NaN. */
 static void documented_results(void **state)
 {
     (void)state;
     double n[3] = {0, 0, 1};
-    const char *inside[] = {"sphere center=0,0,0.5 radius=1", "sphere center=0,0,1 radius=1",
+    const char *inside[] = {"sphere center=0,0,0.5 radius=1",
+                            "sphere center=0,0,1 radius=1",
                             "tube p0=-1,0,0 p1=1,0,0 radius=0.5",
-                            "tube p0=1,0,0 p1=3,0,0 radius=1"};
+                            "tube p0=1,0,0 p1=3,0,0 radius=1",
+                            "tube p0=0.3,0,-0.2 p1=4,0,-0.2 radius=0.5",
+                            "tube p0=-3,0,-0.2 p1=1,0,-0.2 radius=0.5"};
     for (size_t i = 0; i < sizeof inside / sizeof inside[0]; i++) {
         sc_light l = parsed(inside[i]);
         assert_rel(shade_area(&l, SC_AREA_REFERENCE, "lambert diff=0.5", n, n, NULL), 0.5, 1e-12);
+        assert_rel(shade_area(&l, SC_AREA_REPRESENTATIVE, "lambert diff=0.5", n, n, NULL), 0.5,
+                   1e-12);
         for (int m = SC_AREA_REFERENCE; m <= SC_AREA_POINT; m++)
             assert_false(isnan(shade_area(&l, (sc_area_method)m, "cook-torrance", n, n, NULL)));
     }

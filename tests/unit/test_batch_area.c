@@ -214,6 +214,19 @@ static void inside_tube(size_t i, float p[3], float n[3])
     around_centre(i % 3 ? uniform(0.0, 0.45) : 0.0, p);
 }
 
+/* inside the capsule of radius 0.3 about p0 = (−2, 2, 0), p1 = (2, 2, 0), mostly far from the
+ * ball about its centre: along the axis and in its end caps, 10^-4 to 0.2 from the axis, where
+ * the line's irradiance would diverge (1/distance) and a rounding of the point would move it
+ * by more than the bound (the kernel measured 2.9 times it at 0.003 from a tube's axis) */
+static void along_tube_axis(size_t i, float p[3], float n[3])
+{
+    (void)n, (void)i;
+    double r = pow(10.0, uniform(-4.0, -0.7)), phi = uniform(0.0, 6.283185307179586);
+    p[0] = (float)uniform(-2.2, 2.2);
+    p[1] = (float)(2.0 + r * cos(phi));
+    p[2] = (float)(r * sin(phi));
+}
+
 /* on the plane y = 0 under lights above it, n tilted so that they are behind the surface,
  * across its horizon, or in front */
 static void under_lights(size_t i, float p[3], float n[3])
@@ -248,6 +261,8 @@ static void edge_cases(void **state)
          "inside, at the centre and next to a sphere", inside_sphere},
         {"area_tube", "tube p0=-0.5,2,0 p1=0.5,2,0 radius=1 L=3 method=representative-point",
          "inside a tube and at its centre", inside_tube},
+        {"area_tube", "tube p0=-2,2,0 p1=2,2,0 radius=0.3 L=3 method=representative-point",
+         "inside a tube along its axis, far from its centre", along_tube_axis},
         {"area_sphere", "sphere center=0,1,0 radius=0.8 L=3 method=representative-point",
          "behind and across the horizon", under_lights},
         {"area_tube", "tube p0=-2,0.5,0 p1=2,0.5,0 radius=0.3 L=3 method=representative-point",
