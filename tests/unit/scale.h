@@ -10,6 +10,9 @@
 #define SC_TEST_SCALE_H
 
 #include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #if defined(__SANITIZE_ADDRESS__)
 #define SC_TEST_SANITIZED 1
@@ -30,6 +33,19 @@ static inline size_t sc_test_inputs(size_t full)
 #else
     return full;
 #endif
+}
+
+/* A test's random state mixed with SHADECALC_BATCH_SEED when it is set (another set of random
+ * inputs; printed, so that a failure names its seed): the golden-ratio multiple keeps seeds
+ * 1, 2, … far apart, and the state stays nonzero for xorshift. */
+static inline uint64_t sc_test_seeded(uint64_t state)
+{
+    const char *env = getenv("SHADECALC_BATCH_SEED");
+    if (!env)
+        return state;
+    printf("SHADECALC_BATCH_SEED=%s\n", env);
+    state ^= strtoull(env, NULL, 0) * 0x9E3779B97F4A7C15ULL;
+    return state ? state : 0x2545F4914F6CDD1DULL;
 }
 
 #endif

@@ -4,7 +4,8 @@
  * behind the surface or across its horizon, a point in the plane of a disk or rect or behind a
  * one-sided one, a zero-size emitter) on every instruction set against the double
  * approximation of src/light/ within the row's bound and never NaN; what plans accept and
- * refuse, and that a plan shades an area light as its kernel does. */
+ * refuse, and that a plan shades an area light as its kernel does. SHADECALC_BATCH_SEED=k draws
+ * another set of random inputs (tests/unit/scale.h). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -434,6 +435,7 @@ static void plans_shade_as_the_kernels(void **state)
 
 int main(void)
 {
+    rng = sc_test_seeded(rng);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(plans_accept_and_refuse), cmocka_unit_test(plans_shade_as_the_kernels),
         cmocka_unit_test(zero_size_gives_zero),    cmocka_unit_test(edge_cases),

@@ -34,17 +34,6 @@ static const double pi = 3.14159265358979323846;
 
 static uint64_t rng = 0x2545F4914F6CDD1DULL;
 
-/* rng mixed with SHADECALC_BATCH_SEED when it is set (the golden-ratio multiple: seeds 1, 2, …
- * far apart) */
-static void seed_from_environment(void)
-{
-    const char *env = getenv("SHADECALC_BATCH_SEED");
-    if (env) {
-        rng ^= strtoull(env, NULL, 0) * 0x9E3779B97F4A7C15ULL;
-        print_message("SHADECALC_BATCH_SEED=%s\n", env);
-    }
-}
-
 /* Runs every tier and instruction set of `kernel` on the inputs in b (references already in
  * b->ref) and fails on an error beyond a row's bound or a NaN. */
 static void check_all_rows(const char *kernel, batch_buffers *b, const char *what)
@@ -1034,7 +1023,7 @@ static void one_plan_many_threads(void **state)
 
 int main(void)
 {
-    seed_from_environment();
+    rng = sc_test_seeded(rng);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(brdf_normal_incidence_by_hand),
         cmocka_unit_test(every_brdf_form_within_bounds),
