@@ -27,7 +27,8 @@ ROWS_P(brdf, bits16, 9, 3, 0, 0x1p-16, 0x1p-20, BRDF_DOM, VEC(sc_batch_gen_brdf)
 ROWS_P(brdf, bits12, 9, 3, 0, B12, B12, "as bits16", VEC(sc_batch_gen_brdf), 80, BRDF_P)
 #define AREA_DOM(what)                                                                             \
     "n, v nonzero, |n.v| >= 2^-6 |n||v|, p in [-3, 3]^3 (" what "); error against the double "     \
-    "approximation, absolute: the bound x scale, scale = max L_e (c_diff + c_spec)"
+    "approximation, absolute: the bound x scale, scale = max L_e (c_diff + c_spec); next to the "  \
+    "emitter's surface, plus the change one ulp of p makes there"
 ROWS_P(area_sphere, accurate, 9, 3, 0, 0, 0x1p-15, AREA_DOM("representative point, sphere R 0.6"),
        VEC(sc_batch_gen_shade), 300, &sc_batch_test_area_sphere)
 ROWS_P(area_tube, accurate, 9, 3, 0, 0, 0x1p-13, AREA_DOM("representative point, tube R 0.25"),
