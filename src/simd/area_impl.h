@@ -94,15 +94,17 @@ static SC_INLINE vf area_irradiance(sc_light_kind kind, const sc_area_uniforms *
 
 /* The point of the tube's axis (the sphere's centre) closest to the ray along r, relative
  * to the point: t = −(L0·Ld⊥)/|r × Ld|², Ld⊥ = Ld − (r·Ld) r, clamped to [0, 1]; ½ for a ray
- * along the axis. */
+ * along the axis. L0·Ld⊥ = (L0 × r)·(Ld × r) for unit r (Ld⊥ = r × (Ld × r)): a ray nearly
+ * along the axis made Ld − (r·Ld) r cancel, and t, d and the energy normalisation err by 2^-12
+ * relative (GGX α 0.3, 4e-3 of the tube's specular part, r 0.8° off a 4-long axis). */
 static SC_INLINE v3 closest_centre(sc_light_kind kind, const sc_area_uniforms *a, v3 r, v3 c, v3 p)
 {
     if (kind != SC_LIGHT_TUBE)
         return c;
     v3 l0 = v3_sub(v3_set1(a->p0), p), ld = v3_set1(a->axis);
-    vf rd = v3_dot(r, ld), den = cross2(r, ld);
-    v3 perp = v3_sub(ld, v3_scale(r, rd));
-    vf t = area_ratio(vf_sub(vf_set1(0.0f), v3_dot(l0, perp)), den);
+    v3 w = v3_cross(ld, r);
+    vf den = v3_dot(w, w);
+    vf t = area_ratio(vf_sub(vf_set1(0.0f), v3_dot(v3_cross(l0, r), w)), den);
     t = vf_select(vf_lt(vf_set1(0.0f), den), vf_clamp(t, 0.0f, 1.0f), vf_set1(0.5f));
     return v3_add(l0, v3_scale(ld, t));
 }
