@@ -250,8 +250,8 @@ static void header_comment(FILE *out, const char *lead, const bench_machine *m)
     fprintf(out,
             "%smedian_ns: the median of the repeats; cv: 1.4826 MAD / median, ! where noisy "
             "(cv > %.0f%% or max > 2 median); not_cr: results not the reference rounded to "
-            "float; dominated_by: a peer row no less accurate, not slower beyond 3 MAD, and more "
-            "accurate or faster beyond 3 MAD\n",
+            "float; dominated_by: a peer row no less accurate, not slower beyond 3 MAD (its min "
+            "at most the tier's median), and more accurate or faster beyond 3 MAD\n",
             lead, 100.0 * BENCH_NOISY_CV);
 }
 

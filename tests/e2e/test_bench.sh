@@ -100,6 +100,7 @@ for r in rows:
         spread = 3 * math.hypot(p["ns_mad"], r["ns_mad"])
         faster = p["ns_per_elem"] < r["ns_per_elem"] - spread
         assert p["max_ulp"] <= r["max_ulp"] and p["ns_per_elem"] <= r["ns_per_elem"] + spread, (r, p)
+        assert p["ns_min"] <= r["ns_per_elem"], (r, p)
         assert p["max_ulp"] < r["max_ulp"] or faster, (r, p)
         # judged only by peers built for its instruction set or an older one
         assert peer_level(peer[0]) <= level[r["isa"]], (r, peer)
