@@ -292,12 +292,10 @@ static inline vf log2_u4(vf x)
     return log2_fixup(x, vf_add(e, s));
 }
 
-static inline vf exp2_u4(vf x) { return exp2_fast(x, exp2_c5, 6); }
 static inline vf exp2_bits12(vf x) { return exp2_fast(x, exp2_c3, 4); }
 static inline vf exp2_bits8(vf x) { return exp2_fast(x, exp2_c2, 3); }
 static inline vf log2_bits12(vf x) { return log2_fast(x, log2_c4, 5); }
 static inline vf log2_bits8(vf x) { return log2_fast(x, log2_c3, 4); }
-BATCH1(exp2_u4, exp2_u4)
 BATCH1(exp2_bits12, exp2_bits12)
 BATCH1(exp2_bits8, exp2_bits8)
 BATCH1(log2_u4, log2_u4)
@@ -310,19 +308,6 @@ static const float exp_c5[6] = {0.008369169200809018f, 0.041917652374735236f, 0.
 /* ln 2 = ln2_hi + ln2_lo (Cody and Waite): ln2_hi has 9 significant bits, so k·ln2_hi is exact
  * for |k| < 2^15 and x − k·ln2_hi is exact, with or without FMA. */
 static const float ln2_hi = 0.693359375f, ln2_lo = -2.12194440e-4f;
-
-/* e^x = 2^k · e^r, k = rint(x log2 e), r = x − k ln 2 (Cody–Waite); x < −87.3 flushes to 0
- * (results below 2^-126). */
-static inline vf exp_fast(vf x, const float *c, int n)
-{
-    vf xc = vf_min(vf_max(x, vf_set1(-87.3f)), vf_set1(88.8f));
-    vi k = vi_round(vf_mul(xc, vf_set1(1.44269504088896340736f)));
-    vf kf = vi_to_vf(k);
-    vf r = vf_fma(kf, vf_set1(-ln2_lo), vf_fma(kf, vf_set1(-ln2_hi), xc));
-    return scale_or_flush(poly(r, c, n), k, vf_lt(x, vf_set1(-87.3f)), x);
-}
-static inline vf exp_u4(vf x) { return exp_fast(x, exp_c5, 6); }
-BATCH1(exp_u4, exp_u4)
 
 /* exp x = 2^(x log2 e): the product's rounding (|x| <= 88: 2^-17.5 absolute) limits these to
  * the bits tiers. log x = log2 x · ln 2. */
@@ -421,6 +406,44 @@ static SC_INLINE vd exp2_d(vd x)
  * 2^f >= 1 when k = −126, which the callers' ranges ensure. */
 static inline vf scale_by_2k(vf p, vi k) { return vi_as_vf(vi_add(vf_as_vi(p), vi_shl23(k))); }
 
+/* 2^x = 2^k · 2^f, k = rint(x), f = x − k exact, 2^f in [2^-1/2, 2^1/2] by two_to_f. Lanes
+ * outside −126 < x < 128 (subnormal or infinite results) and NaN go to the scalar built-in, so
+ * that the scaling is an integer add to the exponent: no clamp, flush or NaN selects per
+ * vector (exp2 u4 did those, and ran no faster than u1). */
+static SC_INLINE vf exp2_by_parts(vf x, vf (*two_to_f)(vf))
+{
+    vm special = vf_nlt(vf_abs(vf_sub(x, vf_set1(1.0f))), vf_set1(127.0f));
+    vf xc = vf_select(special, vf_set1(0.0f), x);
+    vi k = vi_round(xc);
+    vf p = two_to_f(vf_sub(xc, vi_to_vf(k)));
+    return fixup1(special, x, scale_by_2k(p, k), sc_exp2f);
+}
+
+/* 2^f by exp2_c5 (fit error 7.9e-8): the u4 tier */
+static inline vf exp2_c5_of(vf f) { return poly(f, exp2_c5, 6); }
+static inline vf exp2_u4(vf x) { return exp2_by_parts(x, exp2_c5_of); }
+BATCH1(exp2_u4, exp2_u4)
+
+/* e^x = 2^k e^r, k = rint(x log2 e), r = x − k ln 2 by Cody and Waite's two-part constant
+ * (ln2_hi: k·ln2_hi and its FMA exact), e^r by e_to_r. k can be one off where x log2 e rounds
+ * across a half-integer: the fits' widened interval covers that r. Lanes outside
+ * −87.3 < x < 88.7 and NaN go to the scalar built-in; k = 128 only with r < 0, so 2^k·e^r
+ * stays finite. */
+static SC_INLINE vf exp_by_parts(vf x, vf (*e_to_r)(vf))
+{
+    vm special = vf_nlt(vf_abs(vf_sub(x, vf_set1(0.7f))), vf_set1(88.0f));
+    vf xc = vf_select(special, vf_set1(0.0f), x);
+    vi k = vi_round(vf_mul(xc, vf_set1(log2e_f)));
+    vf kf = vi_to_vf(k);
+    vf r = vf_fma(kf, vf_set1(-ln2_lo), vf_fma(kf, vf_set1(-ln2_hi), xc));
+    return fixup1(special, x, scale_by_2k(e_to_r(r), k), sc_expf);
+}
+
+/* e^r by exp_c5 (fit error 1.0e-7): the u4 tier */
+static inline vf exp_c5_of(vf r) { return poly(r, exp_c5, 6); }
+static inline vf exp_u4(vf x) { return exp_by_parts(x, exp_c5_of); }
+BATCH1(exp_u4, exp_u4)
+
 /* 2/(2k + 1), and the same over ln 2: the coefficients of the series below for log and log2 */
 static const double two_over_odd[7] = {2.0, 2.0 / 3, 2.0 / 5, 2.0 / 7, 2.0 / 9, 2.0 / 11, 2.0 / 13};
 #define SC_LN2 0.6931471805599453094
@@ -479,49 +502,22 @@ static const float exp_q6[7] = {0.00019899307482115443987f,
                                 0.50000000471994520251f,
                                 1.0f};
 
-/* 2^x = 2^k (1 + f q(f)), k = rint(x), f = x − k exact: the last step is one FMA, so the
- * result carries its one rounding plus q's few float ULPs scaled by |f q| / 2^f <= 0.6
- * (measured over every 101st binary32: 0.78 ULP at most; make exhaustive checks all).
- * Lanes outside −126 < x < 128 (subnormal or infinite results) and NaN go to the scalar
- * built-in. */
-static inline vf exp2_u1(vf x)
-{
-    vm special = vf_nlt(vf_abs(vf_sub(x, vf_set1(1.0f))), vf_set1(127.0f));
-    vf xc = vf_select(special, vf_set1(0.0f), x);
-    vi k = vi_round(xc);
-    vf f = vf_sub(xc, vi_to_vf(k));
-    vf p = vf_fma(f, poly(f, exp2_q6, 7), vf_set1(1.0f));
-    return fixup1(special, x, scale_by_2k(p, k), sc_exp2f);
-}
+/* 2^f = 1 + f q(f) (exp2_by_parts): the last step is one FMA, so the result carries its one
+ * rounding plus q's few float ULPs scaled by |f q| / 2^f <= 0.6 (measured over every 101st
+ * binary32: 0.78 ULP at most; make exhaustive checks all). */
+static inline vf exp2_q6_of(vf f) { return vf_fma(f, poly(f, exp2_q6, 7), vf_set1(1.0f)); }
+static inline vf exp2_u1(vf x) { return exp2_by_parts(x, exp2_q6_of); }
 
-/* e^x = 2^k (1 + r q(r)), k = rint(x log2 e), r = x − k ln 2 by Cody and Waite's two-part
- * constant (ln2_hi: k·ln2_hi and its FMA exact), the last step one FMA (measured over every
- * 101st binary32: 0.85 ULP at most). k can be one off where x log2 e rounds across a
- * half-integer: the fit's widened interval covers that r. Lanes outside −87.3 < x < 88.7
- * and NaN go to the scalar built-in; k = 128 only with r < 0, so 2^k·e^r stays finite. */
-static inline vf exp_u1(vf x)
-{
-    vm special = vf_nlt(vf_abs(vf_sub(x, vf_set1(0.7f))), vf_set1(88.0f));
-    vf xc = vf_select(special, vf_set1(0.0f), x);
-    vi k = vi_round(vf_mul(xc, vf_set1(log2e_f)));
-    vf kf = vi_to_vf(k);
-    vf r = vf_fma(kf, vf_set1(-ln2_lo), vf_fma(kf, vf_set1(-ln2_hi), xc));
-    vf p = vf_fma(r, poly(r, exp_q6, 7), vf_set1(1.0f));
-    return fixup1(special, x, scale_by_2k(p, k), sc_expf);
-}
+/* e^r = 1 + r q(r) (exp_by_parts), the last step one FMA (measured over every 101st binary32:
+ * 0.85 ULP at most). */
+static inline vf exp_q6_of(vf r) { return vf_fma(r, poly(r, exp_q6, 7), vf_set1(1.0f)); }
+static inline vf exp_u1(vf x) { return exp_by_parts(x, exp_q6_of); }
 #else
 /* ---- exp2 and exp u1 in double lanes, without an FMA instruction ---- */
 
-/* 2^x = 2^k · 2^f, k = rint(x), f = x − k exact in float, 2^f in double lanes. Lanes outside
- * −126 < x < 128 (subnormal or infinite results) and NaN go to the scalar built-in. */
-static inline vf exp2_u1(vf x)
-{
-    vm special = vf_nlt(vf_abs(vf_sub(x, vf_set1(1.0f))), vf_set1(127.0f));
-    vf xc = vf_select(special, vf_set1(0.0f), x);
-    vi k = vi_round(xc);
-    vf p = on_doubles(vf_sub(xc, vi_to_vf(k)), exp2_reduced_d);
-    return fixup1(special, x, scale_by_2k(p, k), sc_exp2f);
-}
+/* 2^f in double lanes (exp2_by_parts) */
+static inline vf exp2_d_of(vf f) { return on_doubles(f, exp2_reduced_d); }
+static inline vf exp2_u1(vf x) { return exp2_by_parts(x, exp2_d_of); }
 
 /* f = x log2 e − k in double (one rounding: the FMA with −k), |f| <= 1/2 + 2^-17 */
 static inline vd exp_reduced_d(vd x, vd minus_k)
