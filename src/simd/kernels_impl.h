@@ -208,22 +208,19 @@ static const float exp2_c5[6] = {0.0013390863364671234f, 0.009676031918322054f,
                                  0.05550357114219078f,   0.2402210748530834f,
                                  0.6931471880262288f,    1.0000000754548972f};
 
-/* p·2^k, as (p + p)·2^(k−1) so that k = 128 overflows to +Inf exactly when the result does,
- * −125 <= k <= 128; 0 in the lanes of `flush`, x where x is NaN. */
-static inline vf scale_or_flush(vf p, vi k, vm flush, vf x)
-{
-    vf scale = vi_as_vf(vi_shl23(vi_add(k, vi_set1(126))));
-    vf r = vf_select(flush, vf_set1(0.0f), vf_mul(vf_add(p, p), scale));
-    return vf_select(vf_isnan(x), x, r);
-}
+static inline vf scale_by_2k(vf p, vi k) { return vi_as_vf(vi_add(vf_as_vi(p), vi_shl23(k))); }
 
-/* 2^x = 2^k · p(x − k), k = rint(x); x < −125 flushes to 0. */
-static inline vf exp2_fast(vf x, const float *c, int n)
+/* 2^x = 2^k · 2^f, k = rint(x), f = x − k exact, 2^f in [2^-1/2, 2^1/2] by two_to_f. Lanes
+ * outside −126 < x < 128 (subnormal or infinite results) and NaN go to the scalar built-in, so
+ * that the scaling is an integer add to the exponent: no clamp, flush or NaN selects per
+ * vector (the u4 and bits tiers did those, and ran no faster than u1). */
+static SC_INLINE vf exp2_by_parts(vf x, vf (*two_to_f)(vf))
 {
-    vf xc = vf_min(vf_max(x, vf_set1(-125.0f)), vf_set1(128.0f));
+    vm special = vf_nlt(vf_abs(vf_sub(x, vf_set1(1.0f))), vf_set1(127.0f));
+    vf xc = vf_select(special, vf_set1(0.0f), x);
     vi k = vi_round(xc);
-    vf p = poly(vf_sub(xc, vi_to_vf(k)), c, n);
-    return scale_or_flush(p, k, vf_lt(x, vf_set1(-125.0f)), x);
+    vf p = two_to_f(vf_sub(xc, vi_to_vf(k)));
+    return fixup1(special, x, scale_by_2k(p, k), sc_exp2f);
 }
 
 /* log2(1+t)/t on [√½ − 1, √2 − 1]: degree 3 (fit error 6.0e-4), 4 (8.9e-5), 8 (5.0e-8). */
@@ -292,8 +289,10 @@ static inline vf log2_u4(vf x)
     return log2_fixup(x, vf_add(e, s));
 }
 
-static inline vf exp2_bits12(vf x) { return exp2_fast(x, exp2_c3, 4); }
-static inline vf exp2_bits8(vf x) { return exp2_fast(x, exp2_c2, 3); }
+static inline vf exp2_c3_of(vf f) { return poly(f, exp2_c3, 4); }
+static inline vf exp2_c2_of(vf f) { return poly(f, exp2_c2, 3); }
+static inline vf exp2_bits12(vf x) { return exp2_by_parts(x, exp2_c3_of); }
+static inline vf exp2_bits8(vf x) { return exp2_by_parts(x, exp2_c2_of); }
 static inline vf log2_bits12(vf x) { return log2_fast(x, log2_c4, 5); }
 static inline vf log2_bits8(vf x) { return log2_fast(x, log2_c3, 4); }
 BATCH1(exp2_bits12, exp2_bits12)
@@ -404,21 +403,6 @@ static SC_INLINE vd exp2_d(vd x)
 /* 2^f rounded once to float (f: float lanes, or the double lanes of exp_reduced_d) times 2^k
  * by an integer add to the exponent field: exact while the result is a normal float and
  * 2^f >= 1 when k = −126, which the callers' ranges ensure. */
-static inline vf scale_by_2k(vf p, vi k) { return vi_as_vf(vi_add(vf_as_vi(p), vi_shl23(k))); }
-
-/* 2^x = 2^k · 2^f, k = rint(x), f = x − k exact, 2^f in [2^-1/2, 2^1/2] by two_to_f. Lanes
- * outside −126 < x < 128 (subnormal or infinite results) and NaN go to the scalar built-in, so
- * that the scaling is an integer add to the exponent: no clamp, flush or NaN selects per
- * vector (exp2 u4 did those, and ran no faster than u1). */
-static SC_INLINE vf exp2_by_parts(vf x, vf (*two_to_f)(vf))
-{
-    vm special = vf_nlt(vf_abs(vf_sub(x, vf_set1(1.0f))), vf_set1(127.0f));
-    vf xc = vf_select(special, vf_set1(0.0f), x);
-    vi k = vi_round(xc);
-    vf p = two_to_f(vf_sub(xc, vi_to_vf(k)));
-    return fixup1(special, x, scale_by_2k(p, k), sc_exp2f);
-}
-
 /* 2^f by exp2_c5 (fit error 7.9e-8): the u4 tier */
 static inline vf exp2_c5_of(vf f) { return poly(f, exp2_c5, 6); }
 static inline vf exp2_u4(vf x) { return exp2_by_parts(x, exp2_c5_of); }

@@ -137,10 +137,10 @@ static SC_INLINE vf tier_sqrt(int tier, vf x)
 
 /* x^y for x in [2^-126, 1], y >= 0: the specular lobe and the spot falloff, where no special
  * case can occur, so the fast tier skips the selects of pow_bits12: 2^t, t = y log2 x <= 0,
- * with log2 and 2^f as in exp2_fast/log2_fast (same polynomials, same bounds). Results below
- * 2^-100 are flushed to 0: the lobe is then 30 decades under its peak, and the subnormal
- * products it would otherwise feed cost a microcode assist per lane on x86 (bits12 ran 2×
- * slower than the former bits8 tier for that alone). */
+ * with log2 and 2^f as in log2_fast and the exp2 bits tiers (same polynomials, same bounds).
+ * Results below 2^-100 are flushed to 0: the lobe is then 30 decades under its peak, and the
+ * subnormal products it would otherwise feed cost a microcode assist per lane on x86 (bits12
+ * ran 2× slower than the former bits8 tier for that alone). */
 static SC_INLINE vf lobe_pow_fast(vf x, vf y)
 {
     vf m, e;
