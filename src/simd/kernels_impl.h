@@ -208,6 +208,9 @@ static const float exp2_c5[6] = {0.0013390863364671234f, 0.009676031918322054f,
                                  0.05550357114219078f,   0.2402210748530834f,
                                  0.6931471880262288f,    1.0000000754548972f};
 
+/* 2^f rounded once to float (f: float lanes, or the double lanes of exp_reduced_d) times 2^k
+ * by an integer add to the exponent field: exact while the result is a normal float and
+ * 2^f >= 1 when k = −126, which the callers' ranges ensure. */
 static inline vf scale_by_2k(vf p, vi k) { return vi_as_vf(vi_add(vf_as_vi(p), vi_shl23(k))); }
 
 /* 2^x = 2^k · 2^f, k = rint(x), f = x − k exact, 2^f in [2^-1/2, 2^1/2] by two_to_f. Lanes
@@ -400,9 +403,6 @@ static SC_INLINE vd exp2_d(vd x)
     return vl_as_vd(vl_add(vd_as_vl(exp2_reduced_d(vd_sub(x, k))), k_exponent));
 }
 
-/* 2^f rounded once to float (f: float lanes, or the double lanes of exp_reduced_d) times 2^k
- * by an integer add to the exponent field: exact while the result is a normal float and
- * 2^f >= 1 when k = −126, which the callers' ranges ensure. */
 /* 2^f by exp2_c5 (fit error 7.9e-8): the u4 tier */
 static inline vf exp2_c5_of(vf f) { return poly(f, exp2_c5, 6); }
 static inline vf exp2_u4(vf x) { return exp2_by_parts(x, exp2_c5_of); }
