@@ -542,35 +542,44 @@ static void isa_selection(void **state)
     assert_int_equal(sc_isa_set(before), 0);
 }
 
+/* Every float with bits in [from, to) through one-input row e, each result within max_ulp of
+ * exact(x) in double. */
+static void every_float_within(const sc_batch_entry *e, uint32_t from, uint32_t to,
+                               double (*exact)(double), double max_ulp)
+{
+    enum { CHUNK = 1 << 16 };
+    static float in[CHUNK], out[CHUNK];
+    for (uint32_t bits = from; bits < to; bits += CHUNK) {
+        for (uint32_t i = 0; i < CHUNK; i++) {
+            uint32_t b = bits + i;
+            memcpy(&in[i], &b, sizeof b);
+        }
+        sc_batch_args a = {.in = {in}, .out = {out}, .n = CHUNK};
+        e->fn(&a);
+        for (uint32_t i = 0; i < CHUNK; i++) {
+            double err = sc_ulp_error(SC_HIGHP, out[i], exact((double)in[i]));
+            if (err > max_ulp)
+                fail_msg("%s %s %s at %a: %a, %.3g ulp", e->kernel, e->tier, sc_isa_name(e->isa),
+                         (double)in[i], (double)out[i], err);
+        }
+    }
+}
+
 /* log2 u4 where the FMA rounds once: every float in [1/2, 2), the two binades around 1 where
  * t·q(t) ≈ ±1/2 amplifies a rounding of q(t), within 1.5 ulp of the double log2 (issue 12:
  * 2.1 ulp near 1.4138 when q(t) was rounded to float before the last step). */
 static void log2_u4_with_fma_is_within_1_5_ulp_around_1(void **state)
 {
     (void)state;
-    enum { CHUNK = 1 << 16 };
-    static float in[CHUNK], out[CHUNK];
     for (int k = 0; k < sc_batch_count; k++) {
         const sc_batch_entry *e = &sc_batch_table[k];
-        if (strcmp(e->kernel, "log2") != 0 || strcmp(e->tier, "u4") != 0 ||
-            (e->isa != SC_ISA_AVX2 && e->isa != SC_ISA_AVX512) || !sc_isa_supported(e->isa))
-            continue;
-        for (uint32_t bits = 0x3f000000u; bits < 0x40000000u; bits += CHUNK) {
-            for (uint32_t i = 0; i < CHUNK; i++) {
-                uint32_t b = bits + i;
-                memcpy(&in[i], &b, sizeof b);
-            }
-            sc_batch_args a = {.in = {in}, .out = {out}, .n = CHUNK};
-            e->fn(&a);
-            for (uint32_t i = 0; i < CHUNK; i++) {
-                double err = sc_ulp_error(SC_HIGHP, out[i], log2((double)in[i]));
-                if (err > 1.5)
-                    fail_msg("log2 u4 %s at %a: %a, %.3g ulp", sc_isa_name(e->isa), (double)in[i],
-                             (double)out[i], err);
-            }
-        }
+        if (strcmp(e->kernel, "log2") == 0 && strcmp(e->tier, "u4") == 0 &&
+            (e->isa == SC_ISA_AVX2 || e->isa == SC_ISA_AVX512) && sc_isa_supported(e->isa))
+            every_float_within(e, 0x3f000000u, 0x40000000u, log2, 1.5);
     }
 }
+
+static double inverse_sqrt(double x) { return 1.0 / sqrt(x); }
 
 /* inversesqrt u4 on every float of the two lowest normal binades, [2^-126, 2^-124), on every
  * instruction set: within its 4 ULP of 1/√x in double. −x/2, a factor of the Newton step once,
@@ -578,27 +587,11 @@ static void log2_u4_with_fma_is_within_1_5_ulp_around_1(void **state)
 static void inversesqrt_u4_at_the_bottom_of_the_normals(void **state)
 {
     (void)state;
-    enum { CHUNK = 1 << 16 };
-    static float in[CHUNK], out[CHUNK];
     for (int k = 0; k < sc_batch_count; k++) {
         const sc_batch_entry *e = &sc_batch_table[k];
-        if (strcmp(e->kernel, "inversesqrt") != 0 || strcmp(e->tier, "u4") != 0 ||
-            !sc_isa_supported(e->isa))
-            continue;
-        for (uint32_t bits = 0x00800000u; bits < 0x01800000u; bits += CHUNK) {
-            for (uint32_t i = 0; i < CHUNK; i++) {
-                uint32_t b = bits + i;
-                memcpy(&in[i], &b, sizeof b);
-            }
-            sc_batch_args a = {.in = {in}, .out = {out}, .n = CHUNK};
-            e->fn(&a);
-            for (uint32_t i = 0; i < CHUNK; i++) {
-                double err = sc_ulp_error(SC_HIGHP, out[i], 1.0 / sqrt((double)in[i]));
-                if (err > 4.0)
-                    fail_msg("inversesqrt u4 %s at %a: %a, %.3g ulp", sc_isa_name(e->isa),
-                             (double)in[i], (double)out[i], err);
-            }
-        }
+        if (strcmp(e->kernel, "inversesqrt") == 0 && strcmp(e->tier, "u4") == 0 &&
+            sc_isa_supported(e->isa))
+            every_float_within(e, 0x00800000u, 0x01800000u, inverse_sqrt, 4.0);
     }
 }
 
