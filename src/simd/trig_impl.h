@@ -13,11 +13,12 @@
 
 /* ---- float tiers ---- */
 
-/* sin r / r as a polynomial in s = r², s in [0, (π/2 + 0.001)²]: 3 terms (fit error 8.8e-5),
- * 5 terms (4.3e-9). */
+/* sin r / r as a polynomial in s = r², s in [0, (π/2 + 0.001)²]: 3 terms (fit error 8.8e-5);
+ * 5 terms (4.3e-9), whose constant term 1 − 4.3e-9 is 1 in float: (sin r / r − 1)/s by the
+ * other four, sin_p4. */
 static const float sin_c3[3] = {0.00762579659446825f, -0.16601839683017208f, 0.9999111957241367f};
-static const float sin_c5[5] = {2.604920700948167e-06f, -0.00019808936593914233f,
-                                0.008333049100952087f, -0.1666665790378068f, 0.9999999956715665f};
+static const float sin_p4[4] = {2.604920700948167e-06f, -0.00019808936593914233f,
+                                0.008333049100952087f, -0.1666665790378068f};
 
 /* π/2 = pio2_hi + pio2_lo + 1.7e-13: pio2_hi has 11 significant bits, so m·pio2_hi is exact
  * for |m| < 2^13, and x − m·pio2_hi is exact where it matters (Sterbenz). */
@@ -30,27 +31,27 @@ static const float round_shifter = 0x1.8p23f;
  * |x| < the next float above 1000, whose negation also holds for NaN. */
 static const float fast_trig_above = 0x1.f40002p+9f;
 
-/* sin r = r q(r²). Where q's constant term is 1 in float (sin_c5's is 1 − 4.3e-9), as
- * r + r³ p(r²): the exact r added by the last FMA, so the result carries its one rounding
- * plus p's small relative share (sin bits22 on the bench's sample: max 1.41 ULP, 1.70 as
- * r·q(r²) with two roundings of full weight; glibc's vector sinf 1.42), in as many operations. */
-static inline vf sin_poly(vf r, const float *c, int n)
+/* sin r, |r| <= π/2 + 0.001, of the bits22 tier: r + r³ p(r²), the exact r added by the last
+ * FMA, so the result carries its one rounding plus p's small relative share (on the bench's
+ * sample: max 1.41 ULP, 1.70 as r·q(r²) with two roundings of full weight; glibc's vector sinf
+ * 1.42), in as many operations. */
+static inline vf sin_r_bits22(vf r)
 {
     vf t = vf_mul(r, r);
-    if (c[n - 1] == 1.0f)
-        return vf_fma(vf_mul(r, t), poly(t, c, n - 1), r);
-    return vf_mul(r, poly(t, c, n));
+    return vf_fma(vf_mul(r, t), poly(t, sin_p4, 4), r);
 }
+
+/* sin r of the bits12 tier: r q(r²) */
+static inline vf sin_r_bits12(vf r) { return vf_mul(r, poly(vf_mul(r, r), sin_c3, 3)); }
 
 /* (−1)^k sin(x − m·π/2), |x| <= 1000, for the integer m nearest the reduction and k
  * the integer in the low bits of k_bits: r = x − m·π/2 in |r| <= π/2 (plus the rounding of m),
- * sin r = r·q(r²), and the sign flipped by adding k's lowest bit at the sign bit. */
-static inline vf sin_of_reduced(vf x, vf mf, vi k_bits, const float *c, int n)
+ * sin r by sin_r, and the sign flipped by adding k's lowest bit at the sign bit. */
+static SC_INLINE vf sin_of_reduced(vf x, vf mf, vi k_bits, vf (*sin_r)(vf))
 {
     vf r = vf_fma(mf, vf_set1(-pio2_hi), x);
     r = vf_fma(mf, vf_set1(-pio2_lo), r);
-    vf s = sin_poly(r, c, n);
-    return vi_as_vf(vi_add(vf_as_vi(s), vi_shl31(k_bits)));
+    return vi_as_vf(vi_add(vf_as_vi(sin_r(r)), vi_shl31(k_bits)));
 }
 
 /* |x| > 1000 or NaN: the lanes the scalar built-in replaces (the fast lanes compute
@@ -58,27 +59,27 @@ static inline vf sin_of_reduced(vf x, vf mf, vi k_bits, const float *c, int n)
 static inline vm outside_trig(vf x) { return vf_nlt(vf_abs(x), vf_set1(fast_trig_above)); }
 
 /* sin x = (−1)^k sin(x − kπ), k = rint(x/π) by round_shifter: m = 2k */
-static inline vf sin_fast(vf x, const float *c, int n)
+static SC_INLINE vf sin_fast(vf x, vf (*sin_r)(vf))
 {
     vf shifted = vf_fma(x, vf_set1(trig_inv_pi), vf_set1(round_shifter));
     vf kf = vf_sub(shifted, vf_set1(round_shifter));
-    vf r = sin_of_reduced(x, vf_add(kf, kf), vf_as_vi(shifted), c, n);
+    vf r = sin_of_reduced(x, vf_add(kf, kf), vf_as_vi(shifted), sin_r);
     return fixup1(outside_trig(x), x, r, sc_sinf);
 }
 
 /* cos x = sin(x + π/2) = (−1)^k sin(x − (k − ½)π), k = rint(x/π + ½): m = 2k − 1 */
-static inline vf cos_fast(vf x, const float *c, int n)
+static SC_INLINE vf cos_fast(vf x, vf (*sin_r)(vf))
 {
     vf shifted = vf_add(vf_fma(x, vf_set1(trig_inv_pi), vf_set1(0.5f)), vf_set1(round_shifter));
     vf kf = vf_sub(shifted, vf_set1(round_shifter));
     vf mf = vf_fma(kf, vf_set1(2.0f), vf_set1(-1.0f));
-    return fixup1(outside_trig(x), x, sin_of_reduced(x, mf, vf_as_vi(shifted), c, n), sc_cosf);
+    return fixup1(outside_trig(x), x, sin_of_reduced(x, mf, vf_as_vi(shifted), sin_r), sc_cosf);
 }
 
-static inline vf sin_bits22(vf x) { return sin_fast(x, sin_c5, 5); }
-static inline vf sin_bits12(vf x) { return sin_fast(x, sin_c3, 3); }
-static inline vf cos_bits22(vf x) { return cos_fast(x, sin_c5, 5); }
-static inline vf cos_bits12(vf x) { return cos_fast(x, sin_c3, 3); }
+static inline vf sin_bits22(vf x) { return sin_fast(x, sin_r_bits22); }
+static inline vf sin_bits12(vf x) { return sin_fast(x, sin_r_bits12); }
+static inline vf cos_bits22(vf x) { return cos_fast(x, sin_r_bits22); }
+static inline vf cos_bits12(vf x) { return cos_fast(x, sin_r_bits12); }
 BATCH1(sin_bits22, sin_bits22)
 BATCH1(sin_bits12, sin_bits12)
 BATCH1(cos_bits22, cos_bits22)
