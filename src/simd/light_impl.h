@@ -27,7 +27,7 @@ typedef vf (*func_fn)(int tier, vf x, const func_uniforms *u);
 static SC_INLINE void func_lane(int tier, func_fn f, const float *const *in, float *const *out,
                                 size_t i, const void *u)
 {
-    vf_storeu(out[0] + i, f(tier, vf_loadu(in[0] + i), u));
+    vf_storeu(out[0] + i, f(tier, load_once(in[0] + i), u));
 }
 
 static SC_INLINE void run_uniforms(const sc_batch_args *a, int k, int m, lane_n_fn lane,
