@@ -10,7 +10,8 @@
 #define VW 16
 #define VD_PER_VF 2
 #define ISA_SUFFIX avx512
-#define SIMD_HAS_FMA 1 /* vf_fma and vd_fma round once */
+#define SIMD_HAS_FMA 1        /* vf_fma and vd_fma round once */
+#define SIMD_FINE_ESTIMATES 1 /* rsqrt14 and rcp14: relative error <= 2^-14 */
 
 typedef __m512 vf;
 typedef __mmask16 vm; /* one bit per lane */
