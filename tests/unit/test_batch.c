@@ -565,18 +565,29 @@ static void every_float_within(const sc_batch_entry *e, uint32_t from, uint32_t 
     }
 }
 
+/* The instruction sets a check runs on: every one, or those where the FMA rounds once */
+enum { ALL_ISAS = (1 << SC_ISA_COUNT) - 1, FMA_ISAS = 1 << SC_ISA_AVX2 | 1 << SC_ISA_AVX512 };
+
+/* every_float_within for each row of kernel and tier on the instruction sets `isas` this CPU
+ * runs */
+static void every_float_of_rows(const char *kernel, const char *tier, unsigned isas, uint32_t from,
+                                uint32_t to, double (*exact)(double), double max_ulp)
+{
+    for (int k = 0; k < sc_batch_count; k++) {
+        const sc_batch_entry *e = &sc_batch_table[k];
+        if (strcmp(e->kernel, kernel) == 0 && strcmp(e->tier, tier) == 0 && (isas >> e->isa & 1u) &&
+            sc_isa_supported(e->isa))
+            every_float_within(e, from, to, exact, max_ulp);
+    }
+}
+
 /* log2 u4 where the FMA rounds once: every float in [1/2, 2), the two binades around 1 where
  * t·q(t) ≈ ±1/2 amplifies a rounding of q(t), within 1.5 ulp of the double log2 (issue 12:
  * 2.1 ulp near 1.4138 when q(t) was rounded to float before the last step). */
 static void log2_u4_with_fma_is_within_1_5_ulp_around_1(void **state)
 {
     (void)state;
-    for (int k = 0; k < sc_batch_count; k++) {
-        const sc_batch_entry *e = &sc_batch_table[k];
-        if (strcmp(e->kernel, "log2") == 0 && strcmp(e->tier, "u4") == 0 &&
-            (e->isa == SC_ISA_AVX2 || e->isa == SC_ISA_AVX512) && sc_isa_supported(e->isa))
-            every_float_within(e, 0x3f000000u, 0x40000000u, log2, 1.5);
-    }
+    every_float_of_rows("log2", "u4", FMA_ISAS, 0x3f000000u, 0x40000000u, log2, 1.5);
 }
 
 static double inverse_sqrt(double x) { return 1.0 / sqrt(x); }
@@ -587,12 +598,7 @@ static double inverse_sqrt(double x) { return 1.0 / sqrt(x); }
 static void inversesqrt_u4_at_the_bottom_of_the_normals(void **state)
 {
     (void)state;
-    for (int k = 0; k < sc_batch_count; k++) {
-        const sc_batch_entry *e = &sc_batch_table[k];
-        if (strcmp(e->kernel, "inversesqrt") == 0 && strcmp(e->tier, "u4") == 0 &&
-            sc_isa_supported(e->isa))
-            every_float_within(e, 0x00800000u, 0x01800000u, inverse_sqrt, 4.0);
-    }
+    every_float_of_rows("inversesqrt", "u4", ALL_ISAS, 0x00800000u, 0x01800000u, inverse_sqrt, 4.0);
 }
 
 /* inversesqrt u4 where the FMA rounds once (AVX2, AVX-512): the residual-form Newton step on
@@ -602,12 +608,8 @@ static void inversesqrt_u4_at_the_bottom_of_the_normals(void **state)
 static void inversesqrt_u4_with_fma_is_within_1_05_ulp(void **state)
 {
     (void)state;
-    for (int k = 0; k < sc_batch_count; k++) {
-        const sc_batch_entry *e = &sc_batch_table[k];
-        if (strcmp(e->kernel, "inversesqrt") == 0 && strcmp(e->tier, "u4") == 0 &&
-            (e->isa == SC_ISA_AVX2 || e->isa == SC_ISA_AVX512) && sc_isa_supported(e->isa))
-            every_float_within(e, 0x3f800000u, 0x40800000u, inverse_sqrt, 1.05);
-    }
+    every_float_of_rows("inversesqrt", "u4", FMA_ISAS, 0x3f800000u, 0x40800000u, inverse_sqrt,
+                        1.05);
 }
 
 static double inverse_square_floored(double r) { return 1.0 / fmax(r * r, (double)1e-4f); }
@@ -619,12 +621,8 @@ static double inverse_square_floored(double r) { return 1.0 / fmax(r * r, (doubl
 static void atten_invsq_avx512_is_within_0_55_ulp(void **state)
 {
     (void)state;
-    for (int k = 0; k < sc_batch_count; k++) {
-        const sc_batch_entry *e = &sc_batch_table[k];
-        if (strcmp(e->kernel, "atten_invsq") == 0 && e->isa == SC_ISA_AVX512 &&
-            sc_isa_supported(e->isa))
-            every_float_within(e, 0x3b800000u, 0x40800000u, inverse_square_floored, 0.55);
-    }
+    every_float_of_rows("atten_invsq", "u2", 1u << SC_ISA_AVX512, 0x3b800000u, 0x40800000u,
+                        inverse_square_floored, 0.55);
 }
 
 /* normalize u3 at the input where portable C's 1/√(a·a) rounded twice, then the products,
