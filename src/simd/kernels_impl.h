@@ -57,8 +57,8 @@ typedef vf (*lane2_fn)(vf, vf);
  * the folded loads against 0.033 with one (input at 48 mod 64 bytes, as malloc gave the bench;
  * atten_window 0.094 against 0.065). With fewer lanes the register copy measured no faster
  * (AVX2 inversesqrt u4 0.068 ns both ways) and cost some kernels (SSE4.1 atten_clq 0.27 ns
- * with it, 0.22 without): only AVX-512 takes it. The empty asm statement says v changed, so the compiler can
- * no longer re-read it from memory. */
+ * with it, 0.22 without): only AVX-512 takes it. The empty asm statement says v changed, so
+ * the compiler can no longer re-read it from memory. */
 static SC_INLINE vf load_once(const float *p)
 {
     vf v = vf_loadu(p);
