@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "util/bigalloc.h"
+
 static int names_are_valid(int n, const char *const *names)
 {
     for (int c = 0; c < n; c++) {
@@ -40,7 +42,7 @@ int sc_image_init(sc_image *img, int width, int height, int n_channels, const ch
     img->width = width;
     img->height = height;
     img->n_channels = n_channels;
-    img->data = calloc(pixels * (size_t)n_channels, sizeof(float));
+    img->data = sc_big_calloc(pixels * (size_t)n_channels, sizeof(float));
     if (!img->data || copy_names(img, n_channels, names) != 0) {
         sc_image_free(img);
         return -1;

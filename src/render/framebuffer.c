@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "shadecalc/render.h"
+#include "util/bigalloc.h"
 
 static const char *const shading_names[] = {"flat", "gouraud", "phong", "exact"};
 
@@ -28,9 +29,9 @@ int sc_framebuffer_init(sc_framebuffer *fb, int width, int height)
     size_t n = (size_t)width * (size_t)height;
     fb->width = width;
     fb->height = height;
-    fb->rgba = calloc(4 * n, sizeof *fb->rgba);
-    fb->depth = calloc(n, sizeof *fb->depth);
-    fb->normal = calloc(3 * n, sizeof *fb->normal);
+    fb->rgba = sc_big_calloc(4 * n, sizeof *fb->rgba);
+    fb->depth = sc_big_calloc(n, sizeof *fb->depth);
+    fb->normal = sc_big_calloc(3 * n, sizeof *fb->normal);
     if (!fb->rgba || !fb->depth || !fb->normal) {
         sc_framebuffer_free(fb);
         return -1;
