@@ -199,20 +199,14 @@ static SC_INLINE vf atten_windowed(int tier, vf r, const func_uniforms *u)
 /* f(r) = 1 reads no input: a fill, four vectors a step (through run_wide's calls of two
  * vectors Zen 4 stored at 0.76 cycle per vector, where clang's unrolled fill reached 0.5), with
  * non-temporal stores for large arrays as the one-input drivers have them */
-static SC_INLINE void fill_steps(float *out, size_t *i, size_t n, vf v, int stream)
+static SC_INLINE void fill_steps(float *out, size_t *i, size_t n, vf v, void (*store)(float *, vf))
 {
     for (; *i + 4 * VW <= n; *i += 4 * VW) {
         float *p = out + *i;
-        if (stream) {
-            vf_stream(p, v), vf_stream(p + VW, v), vf_stream(p + 2 * VW, v);
-            vf_stream(p + 3 * VW, v);
-        } else {
-            vf_storeu(p, v), vf_storeu(p + VW, v), vf_storeu(p + 2 * VW, v);
-            vf_storeu(p + 3 * VW, v);
-        }
+        store(p, v), store(p + VW, v), store(p + 2 * VW, v), store(p + 3 * VW, v);
     }
     for (; *i + VW <= n; *i += VW)
-        stream ? vf_stream(out + *i, v) : vf_storeu(out + *i, v);
+        store(out + *i, v);
 }
 
 KERNEL(atten_none_u1);
@@ -224,10 +218,10 @@ KERNEL(atten_none_u1)
     if (outputs_stream(a, 1, &peel)) {
         store_partial(out, one, peel);
         i = peel;
-        fill_steps(out, &i, a->n, one, 1);
+        fill_steps(out, &i, a->n, one, vf_stream);
         vf_stream_fence();
     } else
-        fill_steps(out, &i, a->n, one, 0);
+        fill_steps(out, &i, a->n, one, vf_storeu);
     if (i < a->n)
         store_partial(out + i, one, a->n - i);
 }

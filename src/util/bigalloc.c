@@ -1,8 +1,8 @@
 /* Huge-page arrays (bigalloc.h). A 2048² render touched its framebuffer and image, about
  * 260 MiB, in 4 KiB pages: 66 000 page faults and 0.54 s of system time against 0.60 s of
  * computing on one thread of a VM, where faults are dear, and two threads faulting at once
- * contended for the process's memory map (1.3x for two threads). On huge pages: about 3 500
- * faults, 1.7-2.0x for two threads (render --size 2048x2048, Zen 4 VM, THP "madvise"). */
+ * contended for the process's memory map (1.3x for two threads). On huge pages: about 2 000
+ * faults, 1.9-2.4x for two threads (render --size 2048x2048, Zen 4 VM, THP "madvise"). */
 #define _DEFAULT_SOURCE /* MADV_HUGEPAGE */
 #include "util/bigalloc.h"
 
