@@ -21,12 +21,13 @@ void sc_uniforms_atten(const sc_atten *a, sc_atten_kind kind, sc_func_uniforms *
     memset(u, 0, sizeof *u);
     switch (kind) {
     case SC_ATTEN_CLQ: *u = (sc_func_uniforms){{(float)a->sc, (float)a->sl, (float)a->sq}}; break;
-    case SC_ATTEN_WINDOW: { /* the step w = 0 never reaches the ramp: 1/w = inf unused */
+    case SC_ATTEN_WINDOW: { /* the step w = 0: its ramp is 0/1 (the kernels' window_ramp) */
         float w = (float)(a->r_end - a->r_start), s = 1.0f;
         int e = 0;
         if (w > 0.0f && w <= FLT_MAX)
             s = ldexpf(1.0f, min_int(1 - (frexpf(w, &e), e), FLT_MAX_EXP - 2)); /* w = f 2^e */
-        *u = (sc_func_uniforms){{(float)a->r_start, (float)a->r_end, w * s, 1.0f / (w * s), s}};
+        *u = (sc_func_uniforms){{(float)a->r_start, (float)a->r_end, w * s,
+                                 w > 0.0f ? 1.0f / (w * s) : 0.0f, s, w > 0.0f ? w : 1.0f}};
         break;
     }
     case SC_ATTEN_PIXAR: { /* flat where f_c = f_max: k0 = 0 */

@@ -20,9 +20,9 @@ typedef struct {
 
 /* The constants of attenuation function `kind` from a's parameters (a->kind is not read):
  *   clq       sc sl sq
- *   window    r_start r_end w·s 1/(w·s) s, w = r_end − r_start rounded to float, s the power
- *             of 2 that puts w·s in [1, 2), at most 2^126 (w·s >= 2^-23; s = 1 for w = 0),
- *             1/(w·s) rounded once
+ *   window    r_start r_end w·s 1/(w·s) s w, w = r_end − r_start rounded to float, s the
+ *             power of 2 that puts w·s in [1, 2), at most 2^126 (w·s >= 2^-23), 1/(w·s)
+ *             rounded once; the step w = 0 has s = 1, 1/(w·s) = 0 and w = 1 (a ramp of 0/1)
  *   pixar     f_c r_c s_e f_max k0 −k1, k0 = ln(f_c/f_max), k1 = s_e/k0 (flat: k0 = 0)
  *   windowed  r_max r_max² 1/r_max^4                                     others: none */
 void sc_uniforms_atten(const sc_atten *a, sc_atten_kind kind, sc_func_uniforms *u);

@@ -625,6 +625,23 @@ static void atten_invsq_avx512_is_within_0_55_ulp(void **state)
                         inverse_square_floored, 0.55);
 }
 
+/* The window of the rows' parameters (r_start 1, r_end 10: both floats, w = 9 exact) in
+ * double */
+static double window_1_10(double r) { return r <= 1.0 ? 1.0 : r >= 10.0 ? 0.0 : (10.0 - r) / 9.0; }
+
+/* atten_window where the FMA rounds once: the exact difference r_end − r divided without a
+ * division, on every float of [1/2, 2) (across r_start) and of [8, 16) (across r_end, where
+ * r_end − r cancels), within 0.501 ULP, where the quotient of the rounded difference (every
+ * other instruction set) measured 1 ULP. */
+static void atten_window_with_fma_is_within_0_501_ulp(void **state)
+{
+    (void)state;
+    every_float_of_rows("atten_window", "u2", FMA_ISAS, 0x3f000000u, 0x40000000u, window_1_10,
+                        0.501);
+    every_float_of_rows("atten_window", "u2", FMA_ISAS, 0x41000000u, 0x41800000u, window_1_10,
+                        0.501);
+}
+
 /* normalize u3 at the input where portable C's 1/√(a·a) rounded twice, then the products,
  * measured 3.06 ULP (SHADECALC_BATCH_SEED=53): every instruction set within 3 ULP of the
  * double a/|a| */
@@ -733,6 +750,7 @@ int main(void)
         cmocka_unit_test(inversesqrt_u4_at_the_bottom_of_the_normals),
         cmocka_unit_test(inversesqrt_u4_with_fma_is_within_1_05_ulp),
         cmocka_unit_test(atten_invsq_avx512_is_within_0_55_ulp),
+        cmocka_unit_test(atten_window_with_fma_is_within_0_501_ulp),
         cmocka_unit_test(normalize_u3_at_a_hard_input),
     };
     int failed = cmocka_run_group_tests_name("batch", tests, NULL, NULL);
