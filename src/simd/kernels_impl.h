@@ -426,6 +426,14 @@ static const double exp2_d8[9] = {1.0,
 
 static inline vd exp2_reduced_d(vd f) { return vd_horner(f, exp2_d8, 9); }
 
+/* 2^f on [−1/2, 1/2], degree 7: relative fit error 5.5e-11 = 2^-34.1 (mpmath chebyfit, the
+ * coefficients rounded to double), pow's: at most 2^-10 ULP of the float result before its
+ * rounding (pow u1 measured 0.50069 ULP at most on 2^24 random pairs, 0.50004 with exp2_d8,
+ * and 6% slower) */
+static const double exp2_d7[8] = {
+    0.9999999999595618,   0.6931471805568324,    0.24022651213498092,    0.055504109063258665,
+    0.009618025613318034, 0.0013333478473685416, 0.00015469729214118296, 1.5303700711365693e-05};
+
 /* 2^x in double: 2^k · 2^(x − k), k = rint(x), |x| clamped to 1000 (pow's exponential). k by
  * a shifter: x + 1.5·2^52 rounds x to an integer, ties to even, and its low bits are k; the
  * shift by 52 leaves k·2^52 (the shifter's bits above shift out), and adding it to the bits of
@@ -438,7 +446,7 @@ static SC_INLINE vd exp2_d(vd x)
     vd shifted = vd_add(x, vd_set1(shifter));
     vd k = vd_sub(shifted, vd_set1(shifter));
     vl k_exponent = vl_shl52(vd_as_vl(shifted));
-    return vl_as_vd(vl_add(vd_as_vl(exp2_reduced_d(vd_sub(x, k))), k_exponent));
+    return vl_as_vd(vl_add(vd_as_vl(vd_horner(vd_sub(x, k), exp2_d7, 8)), k_exponent));
 }
 
 /* 2^f by exp2_c5 (fit error 7.9e-8): the u4 tier */
