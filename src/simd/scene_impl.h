@@ -99,15 +99,18 @@ static SC_INLINE surface surface_at(int tier, const float *const *in, size_t i)
     return s;
 }
 
-/* (v·h)² = (1 + v·l)/2 = |h|²/4 for unit l and v. The accurate tier takes it from v·l; the fast
- * tiers from |h|², one multiply where v·l costs five (a dot product, its scale, the FMA and
- * the max), and as accurate: v, of length 1 + δ after its Newton step, makes |h|² err by
- * about δ relative, where the dot product's roundings are 2^-24. */
-static SC_INLINE vf v_dot_h2(int tier, vf hh, vf vl)
+/* Schlick's 1 − v·h, v·h = √((1 + v·l)/2) = |h|/2 for unit l and v. The accurate tier takes it
+ * from v·l; the fast tiers from |h|², where v·l costs five operations (a dot product, its
+ * scale, the FMA and the max), and as accurate: v, of length 1 + δ after its Newton step,
+ * makes |h|² err by about δ relative, where the dot product's roundings are 2^-24. 1 − √(|h|²)/2
+ * is one FMA after the root: the same bits as 1 − √(|h|²/4) (a scaling by 1/4 commutes with
+ * the root), an operation fewer. */
+static SC_INLINE vf one_minus_v_dot_h(int tier, vf hh, vf vl)
 {
     if (tier != ACCURATE)
-        return vf_mul(hh, vf_set1(0.25f));
-    return vf_max(vf_fma(vl, vf_set1(0.5f), vf_set1(0.5f)), vf_set1(0.0f));
+        return vf_fma(vf_sqrt(hh), vf_set1(-0.5f), vf_set1(1.0f));
+    vf vh2 = vf_max(vf_fma(vl, vf_set1(0.5f), vf_set1(0.5f)), vf_set1(0.0f));
+    return vf_sub(vf_set1(1.0f), vf_sqrt(vh2));
 }
 
 /* The kernel's own lobes for one light (n, v, l unit; nl = n·l, nv = n·v, vl = v·l) without their
@@ -149,7 +152,7 @@ static SC_INLINE vf own_specular(int tier, sc_lobe lobe, const shade_vecs *c, v3
     vf gv = vf_mul(nl, vf_sqrt(vf_fma(vf_mul(nv, nv), c->one_a2, c->a2)));
     vf gl = vf_mul(nv, vf_sqrt(vf_fma(vf_mul(nl, nl), c->one_a2, c->a2)));
     vf dv = vf_mul(vf_mul(hh, hh), tier_rcp(tier, vf_mul(vf_mul(dh, dh), vf_add(gv, gl))));
-    vf b = vf_sub(vf_set1(1.0f), vf_sqrt(v_dot_h2(tier, hh, vl)));
+    vf b = one_minus_v_dot_h(tier, hh, vl);
     vf b2 = vf_mul(b, b);
     return vf_mul(dv, vf_fma(c->one_f0, vf_mul(vf_mul(b2, b2), b), c->f0));
 }
