@@ -82,9 +82,10 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
      * h·h (3), max (1); then Blinn-Phong n·h = (n·l + n·v) rsqrt (add, mul, max: 3 + rsqrt_n),
      * in the accurate tier the cutoff (compare, select; the fast tiers' is the max), and the
      * squarings of pow_int; GGX without the max: d |h|² (add, mul, fma), g_v and g_l (each mul,
-     * fma, √, mul), |h|⁴/((d |h|²)² (g_v + g_l)) (mul, add, mul, rcp, mul, mul), (v·h)²: accurate
-     * from v·l (3: fma, max), then b = 1 − √(v·h)² (√, sub); fast b = 1 − √(|h|²)/2 (√, fma), b⁵ and F (mul, mul,
-     * mul, fma), D V F (mul); both then the lit select and product (2) and acc += (3 FMA) */
+     * fma, √, mul), |h|⁴/((d |h|²)² (g_v + g_l)) (mul, add, mul, rcp, mul, mul), (v·h)²:
+     * accurate from v·l (3: fma, max), then b = 1 − √(v·h)² (√, sub); fast b = 1 − √(|h|²)/2
+     * (√, fma), b⁵ and F (mul, mul, mul, fma), D V F (mul); both then the lit select and product
+     * (2) and acc += (3 FMA) */
     double lobe = 0;
     if (b->kind == SC_BRDF_BLINN_PHONG)
         lobe = 7 + 3 + t.rsqrt_n + (fast ? 0 : 2) + pow_int_muls(b->m) + 5;

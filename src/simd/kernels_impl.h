@@ -97,6 +97,15 @@ static SC_INLINE void partial1(const float *x, float *out, size_t start, size_t 
  * caches to the inputs and saves the read of each output line before it is written. */
 enum { STREAM_MIN = 1 << 21 };
 
+/* Elements of p before its first element aligned to a whole vector, at most n (0 where p is
+ * not aligned to a float) */
+static SC_INLINE size_t aligning_peel(const float *p, size_t n)
+{
+    size_t bytes = VW * sizeof(float), misalign = (uintptr_t)p % bytes;
+    size_t peel = misalign % sizeof(float) ? 0 : (bytes - misalign) % bytes / sizeof(float);
+    return peel < n ? peel : n;
+}
+
 /* 1 if the outputs are large enough to stream (STREAM_MIN) and share one alignment, whose first
  * `peel` elements come before an aligned vector. */
 static SC_INLINE int outputs_stream(const sc_batch_args *a, int m, size_t *peel)
@@ -107,7 +116,7 @@ static SC_INLINE int outputs_stream(const sc_batch_args *a, int m, size_t *peel)
     for (int j = 1; j < m; j++)
         if ((uintptr_t)a->out[j] % bytes != misalign)
             return 0;
-    *peel = misalign ? (bytes - misalign) / sizeof(float) : 0;
+    *peel = aligning_peel(a->out[0], a->n);
     return 1;
 }
 

@@ -218,11 +218,9 @@ KERNEL(atten_none_u1);
 KERNEL(atten_none_u1)
 {
     float *out = a->out[0];
-    size_t bytes = VW * sizeof(float), misalign = (uintptr_t)out % bytes;
-    size_t i = misalign % sizeof(float) ? 0 : (bytes - misalign) % bytes / sizeof(float);
+    size_t i = aligning_peel(out, a->n);
     vf one = vf_set1(1.0f);
-    int stream = outputs_stream(a, 1, &i);
-    i = i < a->n ? i : a->n;
+    int stream = outputs_stream(a, 1, &i); /* the same peel where it streams */
     for (size_t k = 0; k < i; k++)
         out[k] = 1.0f;
     if (stream) {

@@ -625,9 +625,13 @@ static void atten_invsq_avx512_is_within_0_55_ulp(void **state)
                         inverse_square_floored, 0.55);
 }
 
-/* The window of the rows' parameters (r_start 1, r_end 10: both floats, w = 9 exact) in
- * double */
-static double window_1_10(double r) { return r <= 1.0 ? 1.0 : r >= 10.0 ? 0.0 : (10.0 - r) / 9.0; }
+/* The window of the rows' parameters in double (r_start 1, r_end 10: both floats, and
+ * w = 9 exact) */
+static double window_of_rows(double r)
+{
+    double r_start = sc_batch_test_atten.r_start, r_end = sc_batch_test_atten.r_end;
+    return r <= r_start ? 1.0 : r >= r_end ? 0.0 : (r_end - r) / (r_end - r_start);
+}
 
 /* atten_window where the FMA rounds once: the exact difference r_end − r divided without a
  * division, on every float of [1/2, 2) (across r_start) and of [8, 16) (across r_end, where
@@ -636,9 +640,9 @@ static double window_1_10(double r) { return r <= 1.0 ? 1.0 : r >= 10.0 ? 0.0 : 
 static void atten_window_with_fma_is_within_0_501_ulp(void **state)
 {
     (void)state;
-    every_float_of_rows("atten_window", "u2", FMA_ISAS, 0x3f000000u, 0x40000000u, window_1_10,
+    every_float_of_rows("atten_window", "u2", FMA_ISAS, 0x3f000000u, 0x40000000u, window_of_rows,
                         0.501);
-    every_float_of_rows("atten_window", "u2", FMA_ISAS, 0x41000000u, 0x41800000u, window_1_10,
+    every_float_of_rows("atten_window", "u2", FMA_ISAS, 0x41000000u, 0x41800000u, window_of_rows,
                         0.501);
 }
 
