@@ -43,7 +43,7 @@ static SC_INLINE vf sphere_irradiance(vf ct, vf d, vf R)
 {
     vf zero = vf_set1(0.0f);
     vf sr = area_ratio(R, d), s2 = vf_mul(sr, sr);
-    vf above = vf_select(vf_lt(zero, ct), vf_mul(vf_mul(vf_set1(pi_f), s2), ct), zero);
+    vf above = vf_keep(vf_lt(zero, ct), vf_mul(vf_mul(vf_set1(pi_f), s2), ct));
     vm clipped = vf_lt(vf_mul(ct, ct), s2);
     if (!vm_any(clipped))
         return above;
@@ -86,7 +86,7 @@ static SC_INLINE vf area_irradiance(sc_light_kind kind, const sc_area_uniforms *
         vf den = vf_select(vf_lt(dd, zero), area_ratio(cross2(l0, l1), vf_sub(ab, dd)),
                            vf_add(ab, dd));
         vf num = vf_add(area_ratio(v3_dot(w, l0), a0), area_ratio(v3_dot(w, l1), a1));
-        vf line = vf_select(vf_lt(zero, den), area_ratio(num, den), zero);
+        vf line = vf_keep(vf_lt(zero, den), area_ratio(num, den));
         e = vf_add(e, vf_max(zero, vf_mul(vf_set1(a->line), line)));
     }
     return vf_select(inside, vf_set1(pi_f), e);
@@ -144,14 +144,13 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
         v3 C = v3_sub(v3_scale(r, v3_dot(L, r)), L);
         vf cl = area_length(v3_dot(C, C));
         vf toward = vf_min(vf_set1(1.0f), area_ratio(vf_set1(a->radius), cl));
-        v3 P = v3_add(L, v3_scale(C, vf_select(vf_lt(zero, cl), toward, zero)));
+        v3 P = v3_add(L, v3_scale(C, vf_keep(vf_lt(zero, cl), toward)));
         vf pp = v3_dot(P, P);
         vm at_r = vm_or(inside, vf_eq(pp, zero)); /* inside: l_s = r */
         v3 ls = v3_select(at_r, r, v3_normalize_dd(tier, P, pp));
         vf cos_s = v3_dot(n, ls);
         vm lit = vf_lt(zero, cos_s);
-        vf sp = vf_select(lit, own_specular(tier, lobe, sv, n, v, ls, cos_s, nv, v3_dot(v, ls)),
-                          zero);
+        vf sp = vf_keep(lit, own_specular(tier, lobe, sv, n, v, ls, cos_s, nv, v3_dot(v, ls)));
         vf w = vf_mul(vf_mul(sp, energy_normalisation(lobe, sv, a, d)),
                       vf_mul(area_irradiance(kind, a, ls, c, dc, p, inside), vf_max(cos_s, zero)));
         v3 ks = lv->spec;
@@ -169,7 +168,7 @@ static SC_INLINE vf edge_term(v3 a, v3 b)
     v3 c = v3_cross(a, b);
     vf s = area_length(v3_dot(c, c));
     vf theta = area_angle(s, v3_dot(a, b));
-    return vf_select(vf_lt(vf_set1(0.0f), s), vf_mul(c.z, area_ratio(theta, s)), vf_set1(0.0f));
+    return vf_keep(vf_lt(vf_set1(0.0f), s), vf_mul(c.z, area_ratio(theta, s)));
 }
 
 /* Lambert's edge sum of a convex polygon clipped to z >= 0, accumulated edge by edge, with
@@ -241,8 +240,8 @@ static SC_INLINE vf ltc_mass(const vf m[SC_LTC_ROW])
     vf c = area_ratio(m[0], len);
     c = vf_select(vf_lt(det, vf_set1(0.0f)), vf_sub(vf_set1(0.0f), c), c);
     vm nonzero = vm_or(vf_lt(det, vf_set1(0.0f)), vf_lt(vf_set1(0.0f), det));
-    return vf_select(vm_and(vf_lt(vf_set1(0.0f), len), nonzero),
-                     vf_mul(vf_set1(0.5f), vf_add(vf_set1(1.0f), c)), vf_set1(0.0f));
+    return vf_keep(vm_and(vf_lt(vf_set1(0.0f), len), nonzero),
+                   vf_mul(vf_set1(0.5f), vf_add(vf_set1(1.0f), c)));
 }
 
 /* The view frame (ltc.c's view_frame): z = n, x = v's direction in the tangent plane (the
@@ -281,20 +280,18 @@ static SC_INLINE void ltc_sums(const float *ring, int sides, v3 q, v3 e1, v3 e2,
                           : v3_add(q, v3_add(v3_scale(e1, vf_set1(ring[k])),
                                              v3_scale(e2, vf_set1(ring[sides + k]))));
         vm seg = clip_edge(a, b, all, none, &first, &a2, &b2);
-        first.sum = vf_add(first.sum, vf_select(seg, edge_term(a2, b2), zero));
+        first.sum = vf_add(first.sum, vf_keep(seg, edge_term(a2, b2)));
         vm seg2 = clip_edge(ltc_carry(m, a2), ltc_carry(m, b2), seg, none, &second, &c2, &d2);
-        second.sum = vf_add(second.sum, vf_select(seg2, edge_term(c2, d2), zero));
+        second.sum = vf_add(second.sum, vf_keep(seg2, edge_term(c2, d2)));
         a = b;
     }
     /* the horizon edge of the first clip, through the second: on it z = 0, so its image under
      * M⁻¹ has x = m00 x and z = m20 x, which vanish together */
-    first.sum = vf_add(first.sum,
-                       vf_select(first.crossed, edge_term(first.exit, first.entry), zero));
+    first.sum = vf_add(first.sum, vf_keep(first.crossed, edge_term(first.exit, first.entry)));
     vm seg2 = clip_edge(ltc_carry(m, first.exit), ltc_carry(m, first.entry), first.crossed, all,
                         &second, &c2, &d2);
-    second.sum = vf_add(second.sum, vf_select(seg2, edge_term(c2, d2), zero));
-    second.sum = vf_add(second.sum,
-                        vf_select(second.crossed, edge_term(second.exit, second.entry), zero));
+    second.sum = vf_add(second.sum, vf_keep(seg2, edge_term(c2, d2)));
+    second.sum = vf_add(second.sum, vf_keep(second.crossed, edge_term(second.exit, second.entry)));
     *cosine = vf_min(vf_mul(vf_set1(0.5f), vf_abs(first.sum)), vf_set1(pi_f));
     *lobe = vf_min(vf_mul(vf_set1(0.5f / pi_f), vf_abs(second.sum)), vf_set1(1.0f));
 }
@@ -326,7 +323,7 @@ static SC_INLINE v3 ltc_term(int tier, const sc_shade_uniforms *s, sc_light_kind
                  to_frame(axes, v3_set1(a->e2)), m, &cosine, &lobe);
     vf mass = ltc_mass(m);
     vm spec_on = vm_and(vf_lt(zero, nv), vf_lt(vf_set1(1e-6f), mass));
-    vf share = vf_select(spec_on, area_ratio(lobe, mass), zero);
+    vf share = vf_keep(spec_on, area_ratio(lobe, mass));
     v3 sa = v3_set1(s->ltc_sa), sb = v3_set1(s->ltc_sb), e = v3_set1(lt->color),
        kd = v3_set1(s->diff_pi);
     v3 spec = {vf_fma(sa.x, m[4], vf_mul(sb.x, m[5])), vf_fma(sa.y, m[4], vf_mul(sb.y, m[5])),
@@ -334,9 +331,8 @@ static SC_INLINE v3 ltc_term(int tier, const sc_shade_uniforms *s, sc_light_kind
     v3 out = {vf_fma(kd.x, cosine, vf_mul(spec.x, share)),
               vf_fma(kd.y, cosine, vf_mul(spec.y, share)),
               vf_fma(kd.z, cosine, vf_mul(spec.z, share))};
-    return (v3){vf_select(seen, vf_mul(e.x, out.x), zero),
-                vf_select(seen, vf_mul(e.y, out.y), zero),
-                vf_select(seen, vf_mul(e.z, out.z), zero)};
+    return (v3){vf_keep(seen, vf_mul(e.x, out.x)), vf_keep(seen, vf_mul(e.y, out.y)),
+                vf_keep(seen, vf_mul(e.z, out.z))};
 }
 
 static SC_INLINE v3 area_term(int tier, sc_lobe lobe, const shade_vecs *c, sc_light_kind kind,

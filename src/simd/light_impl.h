@@ -299,7 +299,7 @@ static SC_INLINE vm tangent_axis_x(v3 n)
 static SC_INLINE v3 tangent_of(int tier, v3 n, vm use_x)
 {
     vf tn = vf_select(use_x, n.x, n.y), one = vf_set1(1.0f), zero = vf_set1(0.0f);
-    v3 t = {vf_sub(vf_select(use_x, one, zero), vf_mul(tn, n.x)),
+    v3 t = {vf_sub(vf_keep(use_x, one), vf_mul(tn, n.x)),
             vf_sub(vf_select(use_x, zero, one), vf_mul(tn, n.y)), vf_mul(vf_sub(zero, tn), n.z)};
     return v3_normalize(tier, t);
 }
@@ -465,8 +465,7 @@ static SC_INLINE brdf_weights model_oren_nayar(int tier, const brdf_uniforms *u,
     vm tangent = vm_and(vf_lt(vf_set1(1e-24f), ll), vf_lt(vf_set1(1e-24f), vv));
     vf inv = vf_mul(tier_rsqrt(tier, vf_max(ll, vf_set1(1e-24f))),
                     tier_rsqrt(tier, vf_max(vv, vf_set1(1e-24f))));
-    vf cdp = vf_select(tangent, vf_clamp(vf_mul(v3_dot(nxl, nxv), inv), -1.0f, 1.0f),
-                       vf_set1(0.0f));
+    vf cdp = vf_keep(tangent, vf_clamp(vf_mul(v3_dot(nxl, nxv), inv), -1.0f, 1.0f));
     vf sin_a = tier_sqrt(tier, vf_max(vf_max(ll, vv), vf_set1(FLT_MIN)));
     vf sin_b = tier_sqrt(tier, vf_max(vf_min(ll, vv), vf_set1(FLT_MIN)));
     vf cos_a = vf_min(g->nl, g->nv), cos_b = vf_max(g->nl, g->nv);
@@ -624,9 +623,7 @@ static SC_INLINE void brdf_lane(int tier, brdf_model_fn model, const float *cons
     brdf_geometry g = brdf_geometry_of(tier, u, in, i);
     vm lit = vm_and(vf_lt(vf_set1(0.0f), g.nl), vf_lt(vf_set1(0.0f), g.nv));
     v3 f = brdf_colour(u, model(tier, u, &g));
-    vf zero = vf_set1(0.0f);
-    v3_store((v3){vf_select(lit, f.x, zero), vf_select(lit, f.y, zero), vf_select(lit, f.z, zero)},
-             out, i);
+    v3_store((v3){vf_keep(lit, f.x), vf_keep(lit, f.y), vf_keep(lit, f.z)}, out, i);
 }
 
 #define BRDF_LANE(model, tier)                                                                     \

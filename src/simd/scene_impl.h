@@ -256,7 +256,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
     light_cosines(tier, shape, sf, l, &nl, &vl);
     /* lit: both cosines positive (where either is NaN the min is n·l) */
     vm lit = vf_lt(zero, vf_min(nv, nl));
-    vf w = vf_select(lit, vf_mul(nl, falloff), zero); /* cos θ_i · falloff */
+    vf w = vf_keep(lit, vf_mul(nl, falloff)); /* cos θ_i · falloff */
     if (lobe == SC_LOBE_MODEL) {
         const sc_brdf_uniforms *bu = &c->s->brdf;
         brdf_geometry g = brdf_geometry_make(tier, bu, v3_load(in, 0, i), n, l, v);
@@ -269,7 +269,7 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
                vf_fma(w, lv->diff.z, acc.z)};
     if (lobe == SC_LOBE_NONE)
         return acc;
-    vf ws = vf_select(lit, vf_mul(w, own_specular(tier, lobe, c, n, v, l, nl, nv, vl)), zero);
+    vf ws = vf_keep(lit, vf_mul(w, own_specular(tier, lobe, c, n, v, l, nl, nv, vl)));
     return (v3){vf_fma(ws, lv->spec.x, acc.x), vf_fma(ws, lv->spec.y, acc.y),
                 vf_fma(ws, lv->spec.z, acc.z)};
 }

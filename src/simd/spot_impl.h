@@ -68,7 +68,7 @@ static SC_INLINE vf lobe_pow(int tier, vf x, float e)
     vm pos = vf_lt(vf_set1(0.0f), x), one = vf_eq(x, vf_set1(1.0f));
     vf base = vf_select(vm_and(pos, vf_lt(x, vf_set1(1.0f))), x, vf_set1(0.5f));
     vf p = vf_select(one, vf_set1(1.0f), light_pow(tier, base, vf_set1(e)));
-    return vf_select(pos, p, vf_set1(0.0f));
+    return vf_keep(pos, p);
 }
 
 static SC_INLINE vf spot_opengl(int tier, vf c, const func_uniforms *u)
@@ -78,7 +78,7 @@ static SC_INLINE vf spot_opengl(int tier, vf c, const func_uniforms *u)
     vm inside = vf_le(vf_set1(u->k[0]), c);
     if (!vm_any(inside)) /* no lane in the cone: no power to raise */
         return vf_set1(0.0f);
-    return vf_select(inside, lobe_pow(tier, c, u->k[1]), vf_set1(0.0f));
+    return vf_keep(inside, lobe_pow(tier, c, u->k[1]));
 }
 
 /* 1 inside the inner cone, 0 outside the outer one, else shape(ramp) */

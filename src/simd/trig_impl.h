@@ -141,8 +141,8 @@ static inline vf atan_ratio(vf n, vf d)
 {
     vm big = vf_lt(d, vf_mul(n, vf_set1(cot_pi_8_f)));
     vf u = vf_div(vf_select(big, vf_sub(n, d), n), vf_select(big, vf_add(n, d), d));
-    vf base_hi = vf_select(big, vf_set1(quarter_pi_hi), vf_set1(0.0f));
-    vf base_lo = vf_select(big, vf_set1(quarter_pi_lo), vf_set1(0.0f));
+    vf base_hi = vf_keep(big, vf_set1(quarter_pi_hi));
+    vf base_lo = vf_keep(big, vf_set1(quarter_pi_lo));
     return vf_add(vf_fma(u, poly(vf_mul(u, u), atan_c6, 6), base_lo), base_hi);
 }
 

@@ -43,6 +43,9 @@ static inline vm vm_and(vm a, vm b) { return _mm256_and_ps(a, b); }
 static inline int vm_any(vm a) { return _mm256_movemask_ps(a) != 0; }
 static inline int vm_lane(vm a, int i) { return (_mm256_movemask_ps(a) >> i) & 1; }
 static inline vf vf_select(vm m, vf a, vf b) { return _mm256_blendv_ps(b, a, m); }
+/* a where m, else +0: one AND, where a blend with zero costs the compiler a sign spread of m too
+ * (it cannot know that a comparison's lanes are all bits set or clear) */
+static inline vf vf_keep(vm m, vf a) { return _mm256_and_ps(m, a); }
 static inline vi vf_as_vi(vf x) { return _mm256_castps_si256(x); }
 static inline vf vi_as_vf(vi x) { return _mm256_castsi256_ps(x); }
 static inline vi vi_round(vf x) { return _mm256_cvtps_epi32(x); } /* to nearest, ties even */

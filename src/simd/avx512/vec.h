@@ -48,6 +48,7 @@ static inline vm vm_and(vm a, vm b) { return (vm)(a & b); }
 static inline int vm_any(vm a) { return a != 0; }
 static inline int vm_lane(vm a, int i) { return (a >> i) & 1; }
 static inline vf vf_select(vm m, vf a, vf b) { return _mm512_mask_blend_ps(m, b, a); }
+static inline vf vf_keep(vm m, vf a) { return _mm512_maskz_mov_ps(m, a); } /* a where m, else +0 */
 static inline vi vf_as_vi(vf x) { return _mm512_castps_si512(x); }
 static inline vf vi_as_vf(vi x) { return _mm512_castsi512_ps(x); }
 static inline vi vi_round(vf x) { return _mm512_cvtps_epi32(x); } /* to nearest, ties even */

@@ -66,6 +66,7 @@ static inline int vm_lane(vm a, int i) { return a[i] != 0; }
 static inline vi vf_as_vi(vf x) { return (vi)x; }
 static inline vf vi_as_vf(vi x) { return (vf)x; }
 static inline vf vf_select(vm m, vf a, vf b) { return (vf)((m & (vi)a) | (~m & (vi)b)); }
+static inline vf vf_keep(vm m, vf a) { return (vf)(m & (vi)a); } /* a where m, else +0 */
 /* as minps and maxps: a < b ? a : b, so a NaN in either operand gives b */
 static inline vf vf_min(vf a, vf b) { return vf_select(a < b, a, b); }
 static inline vf vf_max(vf a, vf b) { return vf_select(a > b, a, b); }

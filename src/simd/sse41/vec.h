@@ -42,6 +42,7 @@ static inline vm vm_and(vm a, vm b) { return _mm_and_ps(a, b); }
 static inline int vm_any(vm a) { return _mm_movemask_ps(a) != 0; }
 static inline int vm_lane(vm a, int i) { return (_mm_movemask_ps(a) >> i) & 1; }
 static inline vf vf_select(vm m, vf a, vf b) { return _mm_blendv_ps(b, a, m); }
+static inline vf vf_keep(vm m, vf a) { return _mm_and_ps(m, a); } /* a where m, else +0 */
 static inline vi vf_as_vi(vf x) { return _mm_castps_si128(x); }
 static inline vf vi_as_vf(vi x) { return _mm_castsi128_ps(x); }
 static inline vi vi_round(vf x) { return _mm_cvtps_epi32(x); }
