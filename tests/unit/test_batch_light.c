@@ -585,15 +585,16 @@ static void anisotropic_frame_seam(void **state)
 /* ---- the shading kernel's lobe exponents ---- */
 
 /* The shading kernel raises n·h to an integer m by binary powering (up to 64 in the accurate
- * tier, 256 in the fast ones) and to other m by its pow: tests/unit/test_batch.c checks m = 32
- * on 10^6 inputs; here the other paths, on 10^6 inputs each, every tier and instruction set:
- * m = 40.5 (pow everywhere), 128 (pow in the accurate tier, powering in the fast ones; the
- * largest m of the stated domain), 64 (the largest of the accurate tier's powering). */
+ * tier, 256 in the fast ones; the fast tiers raise (n·h)² to m/2 where m is even) and to other
+ * m by its pow: tests/unit/test_batch.c checks m = 32 on 10^6 inputs; here the other paths, on
+ * 10^6 inputs each, every tier and instruction set: m = 40.5 (pow everywhere), 128 (pow in the
+ * accurate tier, powering in the fast ones; the largest m of the stated domain), 64 (the
+ * largest of the accurate tier's powering), 33 (odd: n·h itself powered), 2 ((n·h)² alone). */
 static void shade_lobe_exponents_within_bounds(void **state)
 {
     (void)state;
     const size_t N_SHADE = sc_test_inputs(1000000);
-    static const double exponents[] = {40.5, 128.0, 64.0};
+    static const double exponents[] = {40.5, 128.0, 64.0, 33.0, 2.0};
     for (size_t k = 0; k < sizeof exponents / sizeof exponents[0]; k++) {
         char what[32];
         snprintf(what, sizeof what, "m = %g", exponents[k]);
