@@ -40,8 +40,8 @@ static SC_INLINE light_vecs light_vecs_of(const sc_shade_uniforms *s, const sc_l
 typedef struct {
     const sc_shade_uniforms *s;
     v3 amb;
-    vf m, cutoff, nh_floor,
-        nh2_floor;                   /* blinn-phong; nh_floor: max(2^-40, cutoff), nh2 its square */
+    vf m, cutoff;                    /* blinn-phong */
+    vf nh_floor, nh2_floor;          /* max(2^-40, cutoff) and its square */
     vf a2, a2m1, one_a2, f0, one_f0; /* ggx: α², α² − 1, 1 − α², F0, 1 − F0 */
     light_vecs lights[SC_BATCH_MAX_LIGHTS];
 } shade_vecs;
@@ -133,7 +133,7 @@ static SC_INLINE vf own_specular(int tier, sc_lobe lobe, const shade_vecs *c, v3
          * holds many times over, and no power is subnormal. An even m raises (n·h)² =
          * (n·(l + v))²/|h|² to m/2: a reciprocal, its Newton step a multiply and a subtraction,
          * where 1/|h| takes a reciprocal square root and two multiplies more, and a squaring
-         * fewer (Blinn-Phong m = 32, one light: two of the 40 multiplies per vector). */
+         * fewer. */
         if (m && tier != ACCURATE && m % 2 == 0) {
             vf sum = n_dot_h(tier, n, h, nl, nv);
             vf nh2 = vf_mul(vf_mul(sum, sum), tier_rcp(tier, hh_min));
