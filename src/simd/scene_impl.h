@@ -203,6 +203,23 @@ static SC_INLINE vf falloff_of(int tier, light_shape shape, const sc_light_unifo
     }
 }
 
+/* d/|d| and, in *falloff, the inverse-square 1/max(r², 10^-4) of r² = d·d in a fast tier: the
+ * square of 1/|d|, which the unit vector takes anyway, where 1/r² would take a reciprocal and
+ * its Newton step. 1/|d| errs by about 2^-22 after its Newton step (rsqrt_newton), its square
+ * twice that, far inside the tier's bound. The rare lanes whose r² overflowed (the estimate's
+ * Newton step gives NaN there) take a falloff of 0, below 2^-128 in truth, and d normalized
+ * again (v3_normalize_dd). */
+static SC_INLINE v3 unit_and_inverse_square(int tier, v3 d, vf r2, vf *falloff)
+{
+    vf inv = inv_length_dd(tier, r2);
+    *falloff = vf_min(vf_mul(inv, inv), vf_set1(1e4f));
+    vm big = vf_eq(r2, vf_set1(INFINITY));
+    if (!vm_any(big))
+        return v3_scale(d, inv);
+    *falloff = vf_select(big, vf_set1(0.0f), *falloff);
+    return v3_normalize_dd(tier, d, r2);
+}
+
 /* Direction to a light and its irradiance factor: 1 (directional), or f_d times the spot
  * factor; at the light itself (r = 0) l = n, as light.h has it. */
 static SC_INLINE v3 light_dir(int tier, light_shape shape, const sc_light_uniforms *lt,
@@ -215,8 +232,13 @@ static SC_INLINE v3 light_dir(int tier, light_shape shape, const sc_light_unifor
     }
     v3 d = v3_sub(lv->pos, v3_load(in, 6, i));
     vf r2 = v3_dot(d, d);
-    *falloff = falloff_of(tier, shape, lt, r2);
-    v3 l = v3_normalize_dd(tier, d, r2);
+    v3 l;
+    if (tier != ACCURATE && shape.atten == SC_ATTEN_INVERSE_SQUARE)
+        l = unit_and_inverse_square(tier, d, r2, falloff);
+    else {
+        *falloff = falloff_of(tier, shape, lt, r2);
+        l = v3_normalize_dd(tier, d, r2);
+    }
     vm at_light = vf_eq(r2, vf_set1(0.0f));
     l = (v3){vf_select(at_light, n.x, l.x), vf_select(at_light, n.y, l.y),
              vf_select(at_light, n.z, l.z)};

@@ -704,6 +704,25 @@ static void plan_points(plan_arrays *a, size_t n)
     }
 }
 
+static const char *const tiers[] = {"accurate", "bits12"};
+enum { N_TIERS = sizeof tiers / sizeof tiers[0] };
+
+static void plan_arrays_alloc(plan_arrays *a)
+{
+    for (int j = 0; j < 9; j++)
+        assert_non_null(a->in[j] = malloc(N_PLAN * sizeof(float)));
+    for (int j = 0; j < 3; j++)
+        assert_non_null(a->out[j] = malloc(N_PLAN * sizeof(float)));
+}
+
+static void plan_arrays_free(plan_arrays *a)
+{
+    for (int j = 0; j < 9; j++)
+        free(a->in[j]);
+    for (int j = 0; j < 3; j++)
+        free(a->out[j]);
+}
+
 /* L at point i of a by sc_shade in double, from the same float inputs. */
 static void shade_double(const sc_scene *scene, const plan_arrays *a, size_t i, double L[3])
 {
@@ -768,13 +787,8 @@ static void plans_match_sc_shade(void **state)
                                          "oren-nayar sigma=30 form=full",
                                          "cook-torrance D=beckmann G=smith F=exact ax=0.3 ay=0.5"};
     enum { N_MODELS = sizeof models / sizeof models[0] };
-    static const char *const tiers[] = {"accurate", "bits12"};
-    enum { N_TIERS = sizeof tiers / sizeof tiers[0] };
     plan_arrays a;
-    for (int j = 0; j < 9; j++)
-        assert_non_null(a.in[j] = malloc(N_PLAN * sizeof(float)));
-    for (int j = 0; j < 3; j++)
-        assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
+    plan_arrays_alloc(&a);
     plan_points(&a, N_PLAN);
     for (int m = 0; m < N_MODELS; m++) {
         sc_light lights[4];
@@ -818,10 +832,57 @@ static void plans_match_sc_shade(void **state)
         free(ref);
         free(scale);
     }
-    for (int j = 0; j < 9; j++)
-        free(a.in[j]);
-    for (int j = 0; j < 3; j++)
-        free(a.out[j]);
+    plan_arrays_free(&a);
+}
+
+/* Points at the extremes of a point light's distance, every tier on every instruction set
+ * against sc_shade in double: at the light (r = 0: l = n), inside the clamp of 1/r² (r² <
+ * 10^-4), r² next to FLT_MAX, and r² overflowing binary32 (the fast tiers' 1/r² from 1/|d|:
+ * src/simd/scene_impl.h, unit_and_inverse_square), where the light adds about 10^-39. */
+static void plans_at_point_light_extremes(void **state)
+{
+    (void)state;
+    /* p − the light's position; each lit (n = +z) */
+    static const float offsets[][3] = {
+        {0, 0, 0},      {0.003f, 0, -0.004f}, {-1e19f, -1e19f, -1e19f},
+        {0, 0, -1e20f}, {0, -3e19f, -3e19f},  {-1, -1, -1}};
+    enum { N_OFFSETS = sizeof offsets / sizeof offsets[0] };
+    static const char *const models[] = {"lambert", "blinn-phong m=32 spec=0.4",
+                                         "cook-torrance alpha=0.3 f0=0.04"};
+    sc_light light;
+    char err[256];
+    assert_int_equal(sc_light_parse("point pos=2,-3,3 I=20", &light, err, sizeof err), 0);
+    plan_arrays a;
+    plan_arrays_alloc(&a);
+    for (size_t i = 0; i < N_PLAN; i++) /* n toward the light, v beside it */
+        for (int c = 0; c < 3; c++) {
+            a.in[c][i] = (float)(c == 2 ? 1.0 : 0.0);
+            a.in[3 + c][i] = (float)(c == 0 ? 0.5 : c == 1 ? 0.25 : 1.0);
+            a.in[6 + c][i] = (float)light.pos[c] + offsets[i % N_OFFSETS][c];
+        }
+    for (int m = 0; m < (int)(sizeof models / sizeof models[0]); m++) {
+        sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
+        assert_int_equal(sc_model_parse(models[m], &scene.model, err, sizeof err), 0);
+        for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+            for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
+                sc_batch_plan *plan = sc_batch_plan_compile(&scene, tiers[t], (sc_isa)isa, err,
+                                                            sizeof err);
+                assert_non_null(plan);
+                double bound = sc_batch_plan_entry(plan)->bound_rel;
+                sc_batch_plan_shade(plan, (const float *const *)a.in, a.out, N_PLAN);
+                for (size_t i = 0; i < N_OFFSETS; i++) {
+                    double ref[3];
+                    shade_double(&scene, &a, i, ref);
+                    for (int c = 0; c < 3; c++)
+                        if (!(fabs(a.out[c][i] - ref[c]) <= 2.0 * bound * fabs(ref[c]) + 1e-30))
+                            fail_msg("%s %s %s offset %zu channel %d: %.9g, sc_shade %.9g",
+                                     models[m], tiers[t], sc_isa_name((sc_isa)isa), i, c,
+                                     (double)a.out[c][i], ref[c]);
+                }
+                sc_batch_plan_free(plan);
+            }
+    }
+    plan_arrays_free(&a);
 }
 
 /* ---- the shading kernel at the mirror direction, at grazing ---- */
@@ -908,15 +969,10 @@ static void fixed_variants_match_the_loop(void **state)
     (void)state;
     static const sc_brdf_kind kinds[] = {SC_BRDF_LAMBERT, SC_BRDF_BLINN_PHONG,
                                          SC_BRDF_COOK_TORRANCE};
-    static const char *const tiers[] = {"accurate", "bits12"};
-    enum { N_TIERS = sizeof tiers / sizeof tiers[0] };
     plan_arrays a, loop;
-    for (int j = 0; j < 9; j++)
-        assert_non_null(a.in[j] = malloc(N_PLAN * sizeof(float)));
-    for (int j = 0; j < 3; j++) {
-        assert_non_null(a.out[j] = malloc(N_PLAN * sizeof(float)));
+    plan_arrays_alloc(&a);
+    for (int j = 0; j < 3; j++)
         assert_non_null(loop.out[j] = malloc(N_PLAN * sizeof(float)));
-    }
     plan_points(&a, N_PLAN);
     for (int shape = 0; shape < 2; shape++)
         for (int count = 1; count <= 4; count++)
@@ -953,12 +1009,9 @@ static void fixed_variants_match_the_loop(void **state)
                         sc_batch_plan_free(pg);
                     }
             }
-    for (int j = 0; j < 9; j++)
-        free(a.in[j]);
-    for (int j = 0; j < 3; j++) {
-        free(a.out[j]);
+    plan_arrays_free(&a);
+    for (int j = 0; j < 3; j++)
         free(loop.out[j]);
-    }
 }
 
 /* The reason a plan is refused names the model, the light or its kind. */
@@ -1083,6 +1136,7 @@ int main(void)
         cmocka_unit_test(fixed_variants_match_the_loop),
         cmocka_unit_test(one_plan_many_threads),
         cmocka_unit_test(spot_integer_exponents),
+        cmocka_unit_test(plans_at_point_light_extremes),
     };
     return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);
 }
