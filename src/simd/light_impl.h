@@ -137,7 +137,11 @@ static SC_INLINE vf atten_window(int tier, vf r, const func_uniforms *u)
 /* Barzel 1997: f_c (r/r_c)^(−s_e) beyond r_c; f_max exp(k0 (r/r_c)^(−k1)) inside (−k1 > 0,
  * so r = 0 gives f_max); f_c = f_max is the flat limit f_max. Each side is computed only where
  * a lane needs it (the lights' falloff is mostly beyond r_c), and by the same formula whatever
- * the other lanes, so that a result does not depend on its neighbours. */
+ * the other lanes, so that a result does not depend on its neighbours. Each side takes r
+ * clamped to its own range: the other side's lanes, whose values it drops, then stay inside
+ * the domain of its pow and exp, where r/r_c far beyond 1 inside (or 0 and NaN beyond) sent
+ * them to the scalar built-ins (a vector of AVX-512 with both kinds of lane, at the bench's r
+ * in [0, 1000], cost 0.74 ns per element against 0.18 with all lanes beyond). */
 
 /* r/r_c, the base of the tiers' pow (negative r: 0) */
 static SC_INLINE vf pixar_base(vf r, const func_uniforms *u)
@@ -184,9 +188,11 @@ static SC_INLINE vf pixar_near(int tier, vf r, const func_uniforms *u)
 
 static SC_INLINE vf atten_pixar(int tier, vf r, const func_uniforms *u)
 {
-    vm outside = vf_lt(vf_set1(u->k[1]), r), near = vf_nlt(vf_set1(u->k[1]), r);
-    vf far_value = vm_any(outside) ? pixar_far(tier, r, u) : vf_set1(0.0f);
-    vf near_value = vm_any(near) ? pixar_near(tier, r, u) : vf_set1(0.0f);
+    vf r_c = vf_set1(u->k[1]);
+    vm outside = vf_lt(r_c, r), near = vf_nlt(r_c, r);
+    /* max(r, r_c) is r_c where r is NaN, min(r_c, r) NaN (src/simd/<isa>/vec.h, as x86) */
+    vf far_value = vm_any(outside) ? pixar_far(tier, vf_max(r, r_c), u) : vf_set1(0.0f);
+    vf near_value = vm_any(near) ? pixar_near(tier, vf_min(r_c, r), u) : vf_set1(0.0f);
     return vf_select(outside, far_value, near_value);
 }
 
