@@ -1,0 +1,119 @@
+/* The shading kernel through a plan for each BRDF model a scene can name, one directional light,
+ * on every tier and instruction set of this CPU: ns per element (the best of R calls on 4096
+ * random points, n·v >= 0.1). `shadecalc bench shade` times the scenes its plain-loop peers
+ * also compute (lambert, Blinn-Phong, GGX); this times the models beyond them.
+ *
+ *   build/bench/plan_models [R]      (default 300; CSV on stdout) */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "shadecalc/batch.h"
+#include "shadecalc/scene.h"
+
+enum { N = 4096 };
+
+static const char *const models[] = {"lambert",
+                                     "blinn-phong m=32 spec=0.4",
+                                     "phong m=20 spec=0.3",
+                                     "oren-nayar sigma=30 form=full",
+                                     "ward alpha=0.3 spec=0.3",
+                                     "ward ax=0.2 ay=0.5 spec=0.3",
+                                     "cook-torrance alpha=0.3 f0=0.04",
+                                     "cook-torrance D=beckmann G=cook-torrance alpha=0.3",
+                                     "cook-torrance D=beckmann G=smith alpha=0.3",
+                                     "cook-torrance D=beckmann G=smith ax=0.2 ay=0.5"};
+static const char *const tiers[] = {"accurate", "bits12"};
+
+static double now_ns(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
+}
+
+static uint64_t rng = 0x9E3779B97F4A7C15ULL;
+static double signed_unit(void)
+{
+    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+    return 2.0 * ((double)(rng >> 11) * 0x1p-53) - 1.0;
+}
+
+/* unit n and a viewer direction v with n·v >= 0.1; p near the origin */
+static void random_points(float in[9][N])
+{
+    for (int i = 0; i < N; i++) {
+        double n[3], v[3], nn, vv, nv;
+        do {
+            nn = vv = nv = 0.0;
+            for (int c = 0; c < 3; c++) {
+                n[c] = signed_unit(), v[c] = signed_unit();
+                nn += n[c] * n[c], vv += v[c] * v[c], nv += n[c] * v[c];
+            }
+        } while (nn > 1.0 || vv > 1.0 || nv < 0.1 * sqrt(nn * vv));
+        for (int c = 0; c < 3; c++) {
+            in[c][i] = (float)(n[c] / sqrt(nn));
+            in[3 + c][i] = (float)v[c];
+            in[6 + c][i] = (float)(0.5 * signed_unit());
+        }
+    }
+}
+
+/* the best of `repeat` calls, ns per element */
+static double best_ns(const sc_batch_plan *plan, float in[9][N], float out[3][N], int repeat)
+{
+    const float *ins[9];
+    float *outs[3];
+    for (int j = 0; j < 9; j++)
+        ins[j] = in[j];
+    for (int j = 0; j < 3; j++)
+        outs[j] = out[j];
+    double best = INFINITY;
+    for (int k = 0; k < repeat; k++) {
+        double t0 = now_ns();
+        sc_batch_plan_shade(plan, ins, outs, N);
+        double t = now_ns() - t0;
+        best = t < best ? t : best;
+    }
+    return best / N;
+}
+
+int main(int argc, char **argv)
+{
+    int repeat = argc > 1 ? atoi(argv[1]) : 300;
+    if (argc > 2 || repeat < 1) {
+        fprintf(stderr, "usage: plan_models [R]\n");
+        return 2;
+    }
+    static float in[9][N], out[3][N];
+    random_points(in);
+    sc_light light;
+    char err[256];
+    if (sc_light_parse("directional dir=-1,-1,2 E=0.7", &light, err, sizeof err) != 0) {
+        fprintf(stderr, "plan_models: %s\n", err);
+        return 1;
+    }
+    printf("model,isa,tier,ns_per_elem\n");
+    for (size_t m = 0; m < sizeof models / sizeof models[0]; m++) {
+        sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
+        if (sc_model_parse(models[m], &scene.model, err, sizeof err) != 0) {
+            fprintf(stderr, "plan_models: %s: %s\n", models[m], err);
+            return 1;
+        }
+        for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+            for (size_t t = 0; t < sizeof tiers / sizeof tiers[0] && sc_isa_supported((sc_isa)isa);
+                 t++) {
+                sc_batch_plan *plan = sc_batch_plan_compile(&scene, tiers[t], (sc_isa)isa, err,
+                                                            sizeof err);
+                if (!plan) {
+                    fprintf(stderr, "plan_models: %s %s: %s\n", models[m], tiers[t], err);
+                    return 1;
+                }
+                printf("\"%s\",%s,%s,%.4f\n", models[m], sc_isa_name((sc_isa)isa), tiers[t],
+                       best_ns(plan, in, out, repeat));
+                sc_batch_plan_free(plan);
+            }
+    }
+    return fflush(stdout) != 0 || ferror(stdout) ? 1 : 0;
+}
