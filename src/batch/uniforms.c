@@ -116,6 +116,15 @@ static void brdf_constants(const sc_brdf *b, double ax, double ay, sc_brdf_unifo
     }
 }
 
+/* m when an integer in 1..SC_LOBE_INT_MAX, else 0; *cutoff 2^(−100/m), the base below which
+ * the fast tiers flush m-th powers to 0 (else 0) */
+static unsigned lobe_exponent(double m, float *cutoff)
+{
+    int integer = m >= 1.0 && m <= SC_LOBE_INT_MAX && m == floor(m);
+    *cutoff = integer ? (float)exp2(-100.0 / m) : 0.0f;
+    return integer ? (unsigned)m : 0u;
+}
+
 void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u)
 {
     double ax = b->ax > 1e-4 ? b->ax : 1e-4, ay = b->ay > 1e-4 ? b->ay : 1e-4;
@@ -131,6 +140,11 @@ void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u)
     u->ax = (float)ax;
     u->ay = (float)ay;
     u->a2 = (float)(ax * ay);
+    /* the exponent model_phong and model_blinn_phong (src/simd/light_impl.h) raise to */
+    double lobe = u->model == SC_BRDF_PHONG         ? b->m
+                  : u->model == SC_BRDF_BLINN_PHONG ? 0.5 * (double)u->m
+                                                    : 0.0;
+    u->lobe_m = lobe_exponent(lobe, &u->lobe_cutoff);
     brdf_colours(b, u);
     brdf_constants(b, ax, ay, u);
 }
@@ -164,13 +178,6 @@ static int own_ggx(const sc_brdf *b)
            b->F == SC_F_SCHLICK && b->ax == b->ay && grey(b->f0);
 }
 
-static void lobe_exponent(double m, sc_shade_uniforms *u)
-{
-    int integer = m >= 1.0 && m <= SC_LOBE_INT_MAX && m == floor(m);
-    u->lobe_m = integer ? (unsigned)m : 0u;
-    u->lobe_cutoff = integer ? (float)exp2(-100.0 / m) : 0.0f;
-}
-
 static int brdf_uniforms_of(const sc_brdf *b, sc_shade_uniforms *u, char *why, size_t size)
 {
     if (b->kind == SC_BRDF_FILE)
@@ -192,7 +199,7 @@ static int brdf_uniforms_of(const sc_brdf *b, sc_shade_uniforms *u, char *why, s
     u->m = (float)b->m;
     u->alpha = u->brdf.ax;
     u->f0 = (float)b->f0[0];
-    lobe_exponent(b->m, u);
+    u->lobe_m = lobe_exponent(b->m, &u->lobe_cutoff);
     return 0;
 }
 

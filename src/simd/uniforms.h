@@ -35,6 +35,10 @@ void sc_uniforms_atten(const sc_atten *a, sc_atten_kind kind, sc_func_uniforms *
  * cos θ_s decide as in double. */
 void sc_uniforms_spot(const sc_spot *s, sc_spot_kind kind, sc_func_uniforms *u);
 
+/* Integer lobe exponents up to this are raised by binary powering in the fast tiers (the
+ * shading kernel's accurate tier stops at 64: see src/simd/shade_impl.h). */
+enum { SC_LOBE_INT_MAX = 256 };
+
 /* A BRDF: f_c = w_0 col[0][c] + w_1 col[1][c] + w_2 col[2][c] with weights the model computes. */
 typedef struct {
     sc_brdf_kind model;
@@ -44,6 +48,9 @@ typedef struct {
     float k[4];      /* the model's constants, named by sc_uniforms_brdf */
     float m, a2;     /* exponent; α_x α_y */
     float ax, ay;    /* α (>= 10^-4) */
+    unsigned lobe_m; /* the cosine lobe's exponent (phong m, blinn-phong m/2) when an integer
+                         * in 1..SC_LOBE_INT_MAX, else 0 */
+    float lobe_cutoff; /* 2^(−100/lobe_m): in the fast tiers powers below it flush to 0 */
 } sc_brdf_uniforms;
 
 void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u);
@@ -88,10 +95,6 @@ typedef struct {
  * the generic loop; variant 1 + 4 s + (count − 1) is count lights of shape s (0 directional,
  * 1 point). */
 enum { SC_SHADE_FIXED_MAX = 4, SC_SHADE_VARIANTS = 1 + 2 * SC_SHADE_FIXED_MAX };
-
-/* Integer lobe exponents up to this are raised by binary powering in the fast tiers (the
- * accurate tier stops at 64: see src/simd/shade_impl.h). */
-enum { SC_LOBE_INT_MAX = 256 };
 
 typedef struct {
     sc_light_uniforms lights[SC_BATCH_MAX_LIGHTS];

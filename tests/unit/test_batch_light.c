@@ -152,7 +152,9 @@ static void every_cook_torrance_within_bounds(void **state)
                 }
 }
 
-/* Other exponents, σ, η, and m = 0 (pow(0, 0) = 1). */
+/* Other exponents (integer ones by binary powering, the others, and those beyond
+ * SC_LOBE_INT_MAX, by the tiers' pow: src/simd/light_impl.h, cos_lobe), σ, η, narrow Gaussian
+ * lobes (exponents below −87 flush: exp_nonpositive), and m = 0 (pow(0, 0) = 1). */
 static void brdf_parameter_extremes_within_bounds(void **state)
 {
     (void)state;
@@ -161,9 +163,22 @@ static void brdf_parameter_extremes_within_bounds(void **state)
     check_brdf(&p, "blinn m 0");
     p.m = 200.0;
     check_brdf(&p, "blinn m 200");
+    p.m = 33.0;
+    check_brdf(&p, "blinn m 33 (m/2 = 16.5)");
     p = brdf_params(SC_BRDF_PHONG, SC_PHONG_MODIFIED);
     p.m = 1.0;
     check_brdf(&p, "phong m 1");
+    p.m = 20.5;
+    check_brdf(&p, "phong m 20.5");
+    p.m = 300.0;
+    check_brdf(&p, "phong m 300");
+    p = brdf_params(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER);
+    p.D = SC_D_BECKMANN;
+    p.ax = p.ay = 0.05;
+    check_brdf(&p, "beckmann smith alpha 0.05");
+    p = brdf_params(SC_BRDF_WARD, SC_WARD_1992);
+    p.ax = p.ay = 0.05;
+    check_brdf(&p, "ward alpha 0.05");
     p = brdf_params(SC_BRDF_OREN_NAYAR, SC_OREN_FULL);
     p.sigma = 1.2;
     check_brdf(&p, "oren-nayar sigma 1.2");
