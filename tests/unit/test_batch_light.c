@@ -152,45 +152,50 @@ static void every_cook_torrance_within_bounds(void **state)
                 }
 }
 
+static void blinn_exponent(sc_brdf *b, double m) { b->m = m; }
+static void isotropic_alpha(sc_brdf *b, double alpha) { b->ax = b->ay = alpha; }
+static void beckmann_alpha(sc_brdf *b, double alpha)
+{
+    b->D = SC_D_BECKMANN;
+    isotropic_alpha(b, alpha);
+}
+static void oren_nayar_sigma(sc_brdf *b, double sigma) { b->sigma = sigma; }
+static void exact_fresnel_ior(sc_brdf *b, double ior)
+{
+    b->F = SC_F_EXACT;
+    b->ior = ior;
+}
+
 /* Other exponents (integer ones by binary powering, the others, and those beyond
  * SC_LOBE_INT_MAX, by the tiers' pow: src/simd/light_impl.h, cos_lobe), σ, η, narrow Gaussian
  * lobes (exponents below −87 flush: exp_nonpositive), and m = 0 (pow(0, 0) = 1). */
 static void brdf_parameter_extremes_within_bounds(void **state)
 {
     (void)state;
-    sc_brdf p = brdf_params(SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN);
-    p.m = 0.0;
-    check_brdf(&p, "blinn m 0");
-    p.m = 200.0;
-    check_brdf(&p, "blinn m 200");
-    p.m = 33.0;
-    check_brdf(&p, "blinn m 33 (m/2 = 16.5)");
-    p = brdf_params(SC_BRDF_PHONG, SC_PHONG_MODIFIED);
-    p.m = 1.0;
-    check_brdf(&p, "phong m 1");
-    p.m = 20.5;
-    check_brdf(&p, "phong m 20.5");
-    p.m = 300.0;
-    check_brdf(&p, "phong m 300");
-    p = brdf_params(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER);
-    p.D = SC_D_BECKMANN;
-    p.ax = p.ay = 0.05;
-    check_brdf(&p, "beckmann smith alpha 0.05");
-    p = brdf_params(SC_BRDF_WARD, SC_WARD_1992);
-    p.ax = p.ay = 0.05;
-    check_brdf(&p, "ward alpha 0.05");
-    p = brdf_params(SC_BRDF_OREN_NAYAR, SC_OREN_FULL);
-    p.sigma = 1.2;
-    check_brdf(&p, "oren-nayar sigma 1.2");
-    p.sigma = 0.0;
-    check_brdf(&p, "oren-nayar sigma 0");
-    p = brdf_params(SC_BRDF_COOK_TORRANCE, SC_CT_WALTER);
-    p.F = SC_F_EXACT;
-    p.ior = 2.4;
-    check_brdf(&p, "exact fresnel eta 2.4");
-    p = brdf_params(SC_BRDF_WARD, SC_WARD_GMD);
-    p.ax = p.ay = 0.2;
-    check_brdf(&p, "ward gmd alpha 0.2");
+    static const struct {
+        sc_brdf_kind kind;
+        int form;
+        void (*change)(sc_brdf *, double);
+        double x;
+        const char *what;
+    } cases[] = {
+        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, blinn_exponent, 0.0, "blinn m 0"},
+        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, blinn_exponent, 200.0, "blinn m 200"},
+        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, blinn_exponent, 33.0, "blinn m 33 (m/2 = 16.5)"},
+        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, blinn_exponent, 1.0, "phong m 1"},
+        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, blinn_exponent, 20.5, "phong m 20.5"},
+        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, blinn_exponent, 300.0, "phong m 300"},
+        {SC_BRDF_COOK_TORRANCE, SC_CT_WALTER, beckmann_alpha, 0.05, "beckmann smith alpha 0.05"},
+        {SC_BRDF_WARD, SC_WARD_1992, isotropic_alpha, 0.05, "ward alpha 0.05"},
+        {SC_BRDF_WARD, SC_WARD_GMD, isotropic_alpha, 0.2, "ward gmd alpha 0.2"},
+        {SC_BRDF_OREN_NAYAR, SC_OREN_FULL, oren_nayar_sigma, 1.2, "oren-nayar sigma 1.2"},
+        {SC_BRDF_OREN_NAYAR, SC_OREN_FULL, oren_nayar_sigma, 0.0, "oren-nayar sigma 0"},
+        {SC_BRDF_COOK_TORRANCE, SC_CT_WALTER, exact_fresnel_ior, 2.4, "exact fresnel eta 2.4"}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        sc_brdf p = brdf_params(cases[k].kind, cases[k].form);
+        cases[k].change(&p, cases[k].x);
+        check_brdf(&p, cases[k].what);
+    }
 }
 
 /* Worked example: l = v = n (normal incidence), Lambert and Blinn-Phong by hand. */
@@ -458,8 +463,6 @@ static void anisotropic_forms_within_bounds(void **state)
 
 /* ---- the shading kernel through plans of the standard scene (1 directional, 1 point and 3
  * spot lights) with other BRDFs ---- */
-
-static void blinn_exponent(sc_brdf *b, double m) { b->m = m; }
 
 /* n inputs of the shade rows' domain, the standard scene with BRDF kind changed by change(b,
  * x), every shade row (tier, instruction set) against sc_shade in double. */
