@@ -1,12 +1,14 @@
 /* The shading kernel through a plan for each BRDF model a scene can name, one directional light,
  * on every tier and instruction set of this CPU: ns per element (the best of R calls on 4096
- * random points, n·v >= 0.1). `shadecalc bench shade` times the scenes its plain-loop peers
+ * random points, cos θ_v >= 0.1). `shadecalc bench shade` times the scenes its plain-loop peers
  * also compute (lambert, Blinn-Phong, GGX); this times the models beyond them.
  *
- *   build/bench/plan_models [R]      (default 300; CSV on stdout) */
+ *   build/bench/plan_models [R]      (R in 1..100000, default 300; CSV on stdout) */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "shadecalc/batch.h"
@@ -40,7 +42,7 @@ static double signed_unit(void)
     return 2.0 * ((double)(rng >> 11) * 0x1p-53) - 1.0;
 }
 
-/* unit n and a viewer direction v with n·v >= 0.1; p near the origin */
+/* unit n and a viewer direction v (not unit) at cos θ_v >= 0.1; p near the origin */
 static void random_points(float in[9][N])
 {
     for (int i = 0; i < N; i++) {
@@ -81,8 +83,9 @@ static double best_ns(const sc_batch_plan *plan, float in[9][N], float out[3][N]
 
 int main(int argc, char **argv)
 {
-    int repeat = argc > 1 ? atoi(argv[1]) : 300;
-    if (argc > 2 || repeat < 1) {
+    char *end = NULL;
+    long repeat = argc > 1 ? strtol(argv[1], &end, 10) : 300;
+    if (argc > 2 || repeat < 1 || repeat > 100000 || (end && *end)) {
         fprintf(stderr, "usage: plan_models [R]\n");
         return 2;
     }
@@ -111,9 +114,13 @@ int main(int argc, char **argv)
                     return 1;
                 }
                 printf("\"%s\",%s,%s,%.4f\n", models[m], sc_isa_name((sc_isa)isa), tiers[t],
-                       best_ns(plan, in, out, repeat));
+                       best_ns(plan, in, out, (int)repeat));
                 sc_batch_plan_free(plan);
             }
     }
-    return fflush(stdout) != 0 || ferror(stdout) ? 1 : 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "plan_models: writing the CSV: %s\n", strerror(errno));
+        return 1;
+    }
+    return 0;
 }

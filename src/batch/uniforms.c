@@ -141,7 +141,7 @@ void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u)
     u->ay = (float)ay;
     u->a2 = (float)(ax * ay);
     /* the exponent model_phong and model_blinn_phong (src/simd/light_impl.h) raise to */
-    double lobe = u->model == SC_BRDF_PHONG         ? b->m
+    double lobe = u->model == SC_BRDF_PHONG         ? (double)u->m
                   : u->model == SC_BRDF_BLINN_PHONG ? 0.5 * (double)u->m
                                                     : 0.0;
     u->lobe_m = lobe_exponent(lobe, &u->lobe_cutoff);

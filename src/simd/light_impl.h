@@ -22,8 +22,8 @@ static SC_INLINE vf light_exp(int tier, vf x)
 
 /* e^x for x <= 0 (the Gaussian lobes of Ward and Beckmann, Beckmann's Λ), 0 below x = −87,
  * where e^x < 1.7e-38 (FLT_MIN is 1.2e-38): an absolute error far inside every bound's
- * absolute term, the lobe's factors beside it bounded there (tan²θ/α² >= 87 keeps n·h away from
- * 0). Every tier's exp hands the lanes below about −87.3 to the scalar built-in, and grazing
+ * absolute term, as the factor beside it (Beckmann's 1/cos⁴θ_h = (1 + α² x)² at x = tan²θ_h/α²)
+ * grows far slower than e^-x falls. Every tier's exp hands the lanes below about −87.3 to the scalar built-in, and grazing
  * half vectors reach them on ordinary inputs: a third of the lanes at α = 0.3, where the
  * Beckmann shading kernel took 23 ns per element against GGX's 1.3. NaN stays NaN (the max
  * keeps it: src/simd/<isa>/vec.h). */
@@ -150,11 +150,12 @@ static SC_INLINE vf atten_window(int tier, vf r, const func_uniforms *u)
 /* Barzel 1997: f_c (r/r_c)^(−s_e) beyond r_c; f_max exp(k0 (r/r_c)^(−k1)) inside (−k1 > 0,
  * so r = 0 gives f_max); f_c = f_max is the flat limit f_max. Each side is computed only where
  * a lane needs it (the lights' falloff is mostly beyond r_c), and by the same formula whatever
- * the other lanes, so that a result does not depend on its neighbours. Each side takes r
- * clamped to its own range: the other side's lanes, whose values it drops, then stay inside
- * the domain of its pow and exp, where r/r_c far beyond 1 inside (or 0 and NaN beyond) sent
- * them to the scalar built-ins (a vector of AVX-512 with both kinds of lane, at the bench's r
- * in [0, 1000], cost 0.74 ns per element against 0.18 with all lanes beyond). */
+ * the other lanes, so that a result does not depend on its neighbours. The other side's lanes,
+ * whose values a side drops, take r = r_c/2 inside and 2 r_c beyond (a base of 1/2): inside
+ * the domain of every tier's pow and exp, away from its special cases, where r/r_c far beyond
+ * 1 inside (0 and NaN beyond; 1 exactly, had r been clamped to r_c) sent them to the scalar
+ * built-ins (a vector of AVX-512 with both kinds of lane, at the bench's r in [0, 1000], cost
+ * 0.74 ns per element against 0.18 with all lanes beyond). */
 
 /* r/r_c, the base of the tiers' pow (negative r: 0) */
 static SC_INLINE vf pixar_base(vf r, const func_uniforms *u)
@@ -174,19 +175,18 @@ static SC_INLINE vd pixar_far_d(vd q, vd r_c, vd f_c, unsigned m)
  * powering, as the spot exponents are (src/simd/spot_impl.h): faster than the tiers' pow; in
  * the accurate tier in double, within 0.5 ULP (pixar_far_d), in the fast tiers in float
  * (pow_uint_tier) of the quotient rounded to float, 3m 2^-24 relative in all (2^-12.4
- * at m = 1024). The lanes at or inside r_c divide by r_c instead of r, so that no quotient is
- * infinite. Other exponents take the tier's pow of r/r_c. */
+ * at m = 1024). Other exponents take the tier's pow of r/r_c. r > r_c in every lane
+ * (atten_pixar). */
 static SC_INLINE vf pixar_far(int tier, vf r, const func_uniforms *u)
 {
     unsigned m = lobe_uint(u->k[2]);
     if (!m)
         return vf_mul(vf_set1(u->k[0]), light_pow(tier, pixar_base(r, u), vf_set1(-u->k[2])));
-    vf q = vf_max(r, vf_set1(u->k[1]));
     if (tier != ACCURATE)
-        return vf_mul(vf_set1(u->k[0]), pow_uint_tier(tier, vf_div(vf_set1(u->k[1]), q), m));
+        return vf_mul(vf_set1(u->k[0]), pow_uint_tier(tier, vf_div(vf_set1(u->k[1]), r), m));
     vd r_c = vd_set1(u->k[1]), f_c = vd_set1(u->k[0]);
-    return vf_from_vd(pixar_far_d(vd_from_lo(q), r_c, f_c, m),
-                      pixar_far_d(vd_from_hi(q), r_c, f_c, m));
+    return vf_from_vd(pixar_far_d(vd_from_lo(r), r_c, f_c, m),
+                      pixar_far_d(vd_from_hi(r), r_c, f_c, m));
 }
 
 /* The lanes at or inside r_c (and NaN) */
@@ -201,11 +201,12 @@ static SC_INLINE vf pixar_near(int tier, vf r, const func_uniforms *u)
 
 static SC_INLINE vf atten_pixar(int tier, vf r, const func_uniforms *u)
 {
-    vf r_c = vf_set1(u->k[1]);
-    vm outside = vf_lt(r_c, r), near = vf_nlt(r_c, r);
-    /* max(r, r_c) is r_c where r is NaN, min(r_c, r) NaN (src/simd/<isa>/vec.h, as x86) */
-    vf far_value = vm_any(outside) ? pixar_far(tier, vf_max(r, r_c), u) : vf_set1(0.0f);
-    vf near_value = vm_any(near) ? pixar_near(tier, vf_min(r_c, r), u) : vf_set1(0.0f);
+    float r_c = u->k[1];
+    vm outside = vf_lt(vf_set1(r_c), r), near = vf_nlt(vf_set1(r_c), r); /* near: NaN too */
+    vf far_value = vm_any(outside) ? pixar_far(tier, vf_select(outside, r, vf_set1(2.0f * r_c)), u)
+                                   : vf_set1(0.0f);
+    vf near_value = vm_any(near) ? pixar_near(tier, vf_select(outside, vf_set1(0.5f * r_c), r), u)
+                                 : vf_set1(0.0f);
     return vf_select(outside, far_value, near_value);
 }
 
@@ -534,9 +535,11 @@ static const float erfc_c[10] = {0.17087277f, -0.82215223f, 1.48851587f, -1.1352
 /* c = cos θ; p = (w·t α_x)² + (w·b α_y)² when anisotropic (α sin θ = √p) */
 static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c, vf p)
 {
-    /* c > 0 in every lit lane; an unlit lane's c < 0 would take t beyond [0, 1] and its exp to
-     * the scalar built-in, for a value the kernels drop (NaN stays NaN: the max keeps it) */
-    c = vf_max(vf_set1(0.0f), c);
+    /* c > 0 in nearly every lit lane; a lane's c < 0 would take t beyond [0, 1] and its exp to
+     * the scalar built-in. Floored at FLT_MIN, not 0: a lane lit by the fast tiers' n·l of the
+     * loaded vectors may have c <= 0 here at grazing, and c = 0 made 1/a (rcp_newton of 0) NaN.
+     * NaN stays NaN (the max keeps it). */
+    c = vf_max(vf_set1(FLT_MIN), c);
     vf as;
     if (u->aniso)
         as = tier_sqrt(tier, vf_max(p, vf_set1(FLT_MIN)));

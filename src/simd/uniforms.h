@@ -35,8 +35,8 @@ void sc_uniforms_atten(const sc_atten *a, sc_atten_kind kind, sc_func_uniforms *
  * cos θ_s decide as in double. */
 void sc_uniforms_spot(const sc_spot *s, sc_spot_kind kind, sc_func_uniforms *u);
 
-/* Integer lobe exponents up to this are raised by binary powering in the fast tiers (the
- * shading kernel's accurate tier stops at 64: see src/simd/shade_impl.h). */
+/* Integer lobe exponents up to this are raised by binary powering (the shading kernel's own
+ * lobes in its accurate tier stop at 64: see src/simd/shade_impl.h). */
 enum { SC_LOBE_INT_MAX = 256 };
 
 /* A BRDF: f_c = w_0 col[0][c] + w_1 col[1][c] + w_2 col[2][c] with weights the model computes. */
@@ -50,7 +50,7 @@ typedef struct {
     float ax, ay;    /* α (>= 10^-4) */
     unsigned lobe_m; /* the cosine lobe's exponent (phong m, blinn-phong m/2) when an integer
                          * in 1..SC_LOBE_INT_MAX, else 0 */
-    float lobe_cutoff; /* 2^(−100/lobe_m): in the fast tiers powers below it flush to 0 */
+    float lobe_cutoff; /* 2^(−100/lobe_m): in the fast tiers bases below it give 0 */
 } sc_brdf_uniforms;
 
 void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u);
@@ -104,7 +104,7 @@ typedef struct {
     float lobe_k;                           /* blinn-phong: (m+8)/(8π) or 1 */
     float m, alpha, f0;                     /* blinn-phong m; ggx α (>= 10^-4), grey F0 */
     unsigned lobe_m;                        /* m when an integer in 1..SC_LOBE_INT_MAX, else 0 */
-    float lobe_cutoff;                      /* 2^(−100/m): powers below it flush to 0 */
+    float lobe_cutoff;                      /* 2^(−100/m): bases below it give 0 */
     sc_brdf_uniforms brdf;                  /* SC_LOBE_MODEL */
     int variant;                            /* the kernel's variant for the scene's lights */
     /* LTC (disk and rect lights): c_spec ⊙ F0 and c_spec ⊙ (1 − F0) (0 for lambert), and the

@@ -152,7 +152,7 @@ static void every_cook_torrance_within_bounds(void **state)
                 }
 }
 
-static void blinn_exponent(sc_brdf *b, double m) { b->m = m; }
+static void set_exponent(sc_brdf *b, double m) { b->m = m; }
 static void isotropic_alpha(sc_brdf *b, double alpha) { b->ax = b->ay = alpha; }
 static void beckmann_alpha(sc_brdf *b, double alpha)
 {
@@ -179,12 +179,12 @@ static void brdf_parameter_extremes_within_bounds(void **state)
         double x;
         const char *what;
     } cases[] = {
-        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, blinn_exponent, 0.0, "blinn m 0"},
-        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, blinn_exponent, 200.0, "blinn m 200"},
-        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, blinn_exponent, 33.0, "blinn m 33 (m/2 = 16.5)"},
-        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, blinn_exponent, 1.0, "phong m 1"},
-        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, blinn_exponent, 20.5, "phong m 20.5"},
-        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, blinn_exponent, 300.0, "phong m 300"},
+        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, set_exponent, 0.0, "blinn m 0"},
+        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, set_exponent, 200.0, "blinn m 200"},
+        {SC_BRDF_BLINN_PHONG, SC_BLINN_PLAIN, set_exponent, 33.0, "blinn m 33 (m/2 = 16.5)"},
+        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, set_exponent, 1.0, "phong m 1"},
+        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, set_exponent, 20.5, "phong m 20.5"},
+        {SC_BRDF_PHONG, SC_PHONG_MODIFIED, set_exponent, 300.0, "phong m 300"},
         {SC_BRDF_COOK_TORRANCE, SC_CT_WALTER, beckmann_alpha, 0.05, "beckmann smith alpha 0.05"},
         {SC_BRDF_WARD, SC_WARD_1992, isotropic_alpha, 0.05, "ward alpha 0.05"},
         {SC_BRDF_WARD, SC_WARD_GMD, isotropic_alpha, 0.2, "ward gmd alpha 0.2"},
@@ -375,7 +375,7 @@ static void spot_edges(void **state)
     check_function("spot_smoothstep", &p, 1.0, points, n, "0..90");
 }
 
-/* Integer exponents, raised by binary powering in double (src/simd/spot_impl.h): every tier
+/* Integer exponents, raised by binary powering (src/simd/spot_impl.h): every tier
  * within its bound up to the largest such exponent, and just past it (the tiers' pow); cones
  * narrow enough that no result inside underflows. */
 static void spot_integer_exponents(void **state)
@@ -628,7 +628,7 @@ static void shade_lobe_exponents_within_bounds(void **state)
     for (size_t k = 0; k < sizeof exponents / sizeof exponents[0]; k++) {
         char what[32];
         snprintf(what, sizeof what, "m = %g", exponents[k]);
-        check_shade_scene(SC_BRDF_BLINN_PHONG, blinn_exponent, exponents[k], N_SHADE, what);
+        check_shade_scene(SC_BRDF_BLINN_PHONG, set_exponent, exponents[k], N_SHADE, what);
     }
 }
 
@@ -853,6 +853,66 @@ static void plans_match_sc_shade(void **state)
     plan_arrays_free(&a);
 }
 
+/* A plan of scene for tier and isa, through which a's inputs are shaded into a's outputs; the
+ * caller frees it. */
+static sc_batch_plan *shade_through_plan(const sc_scene *scene, const char *tier, sc_isa isa,
+                                         plan_arrays *a)
+{
+    char why[256] = "";
+    sc_batch_plan *plan = sc_batch_plan_compile(scene, tier, isa, why, sizeof why);
+    if (!plan)
+        fail_msg("%s %s: %s", tier, sc_isa_name(isa), why);
+    sc_batch_plan_shade(plan, (const float *const *)a->in, a->out, N_PLAN);
+    return plan;
+}
+
+/* Normals within 3·10^-8 of a directional light's terminator (n·l of either sign), Beckmann
+ * with Smith masking in every tier and instruction set: the fast tiers decide "lit" from n·l
+ * of the loaded vectors, and their Λ once saw n·l <= 0 in such a lit lane and gave NaN
+ * (src/simd/light_impl.h, beckmann_lambda). Every output finite. */
+static void plans_at_the_terminator_are_finite(void **state)
+{
+    (void)state;
+    static const char *const models[] = {"cook-torrance D=beckmann G=smith alpha=0.3",
+                                         "cook-torrance D=beckmann G=smith-correlated alpha=0.3"};
+    sc_light light;
+    char err[256];
+    assert_int_equal(sc_light_parse("directional dir=0,0.6,0.8 E=1", &light, err, sizeof err), 0);
+    plan_arrays a;
+    plan_arrays_alloc(&a);
+    static const double l[3] = {0.0, 0.6, 0.8};
+    for (size_t i = 0; i < N_PLAN; i++) {
+        /* n: a random direction ⊥ l tilted by up to ±3·10^-8 rad; v: n plus noise */
+        double r[3] = {signed_unit(), signed_unit(), signed_unit()}, rl = 0.0, len = 0.0;
+        for (int c = 0; c < 3; c++)
+            rl += r[c] * l[c];
+        for (int c = 0; c < 3; c++)
+            r[c] -= rl * l[c], len += r[c] * r[c];
+        double t = 3e-8 * signed_unit();
+        for (int c = 0; c < 3; c++) {
+            double n = r[c] / sqrt(len) * cos(t) + l[c] * sin(t);
+            a.in[c][i] = (float)n;
+            a.in[3 + c][i] = (float)(n + 0.3 * signed_unit());
+            a.in[6 + c][i] = 0.0f;
+        }
+    }
+    for (size_t m = 0; m < sizeof models / sizeof models[0]; m++) {
+        sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
+        assert_int_equal(sc_model_parse(models[m], &scene.model, err, sizeof err), 0);
+        for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+            for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
+                sc_batch_plan *plan = shade_through_plan(&scene, tiers[t], (sc_isa)isa, &a);
+                for (size_t i = 0; i < N_PLAN; i++)
+                    for (int c = 0; c < 3; c++)
+                        if (!isfinite(a.out[c][i]))
+                            fail_msg("%s %s %s point %zu: %g", models[m], tiers[t],
+                                     sc_isa_name((sc_isa)isa), i, (double)a.out[c][i]);
+                sc_batch_plan_free(plan);
+            }
+    }
+    plan_arrays_free(&a);
+}
+
 /* Points at the extremes of a point light's distance, every tier on every instruction set
  * against sc_shade in double: at the light (r = 0: l = n), inside the clamp of 1/r² (r² <
  * 10^-4), r² next to FLT_MAX, and r² overflowing binary32 (the fast tiers' 1/r² from 1/|d|:
@@ -883,11 +943,8 @@ static void plans_at_point_light_extremes(void **state)
         assert_int_equal(sc_model_parse(models[m], &scene.model, err, sizeof err), 0);
         for (int isa = 0; isa < SC_ISA_COUNT; isa++)
             for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
-                sc_batch_plan *plan = sc_batch_plan_compile(&scene, tiers[t], (sc_isa)isa, err,
-                                                            sizeof err);
-                assert_non_null(plan);
+                sc_batch_plan *plan = shade_through_plan(&scene, tiers[t], (sc_isa)isa, &a);
                 double bound = sc_batch_plan_entry(plan)->bound_rel;
-                sc_batch_plan_shade(plan, (const float *const *)a.in, a.out, N_PLAN);
                 for (size_t i = 0; i < N_OFFSETS; i++) {
                     double ref[3];
                     shade_double(&scene, &a, i, ref);
@@ -954,8 +1011,8 @@ static void shade_grazing_mirror_within_bounds(void **state)
         const char *what;
     } lobes[] = {{SC_BRDF_COOK_TORRANCE, ggx_lobe, 0.3, "ggx 0.3"},
                  {SC_BRDF_COOK_TORRANCE, ggx_lobe, 0.2, "ggx 0.2"},
-                 {SC_BRDF_BLINN_PHONG, blinn_exponent, 32.0, "blinn-phong 32"},
-                 {SC_BRDF_BLINN_PHONG, blinn_exponent, 128.0, "blinn-phong 128"}};
+                 {SC_BRDF_BLINN_PHONG, set_exponent, 32.0, "blinn-phong 32"},
+                 {SC_BRDF_BLINN_PHONG, set_exponent, 128.0, "blinn-phong 128"}};
     for (size_t k = 0; k < sizeof lobes / sizeof lobes[0]; k++) {
         sc_light lights[SC_BATCH_MAX_LIGHTS];
         sc_scene scene;
@@ -1155,6 +1212,7 @@ int main(void)
         cmocka_unit_test(one_plan_many_threads),
         cmocka_unit_test(spot_integer_exponents),
         cmocka_unit_test(plans_at_point_light_extremes),
+        cmocka_unit_test(plans_at_the_terminator_are_finite),
     };
     return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);
 }
