@@ -11,6 +11,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "shadecalc/accuracy.h"
 #include "shadecalc/batch.h"
 #include "shadecalc/scene.h"
 
@@ -35,11 +36,11 @@ static double now_ns(void)
     return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
 }
 
-static uint64_t rng = 0x9E3779B97F4A7C15ULL;
+/* uniform in [-1, 1) */
 static double signed_unit(void)
 {
-    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
-    return 2.0 * ((double)(rng >> 11) * 0x1p-53) - 1.0;
+    static uint64_t rng = 0x9E3779B97F4A7C15ULL;
+    return 2.0 * ((double)(sc_accuracy_random(&rng) >> 11) * 0x1p-53) - 1.0;
 }
 
 /* unit n and a viewer direction v (not unit) at cos θ_v >= 0.1; p near the origin */

@@ -20,17 +20,17 @@ static SC_INLINE vf light_exp(int tier, vf x)
     return tier == ACCURATE ? exp_u1(x) : exp_bits12(x);
 }
 
-/* e^x for x <= 0 (the Gaussian lobes of Ward and Beckmann, Beckmann's Λ), 0 below x = −87,
- * where e^x < 1.7e-38 (FLT_MIN is 1.2e-38): an absolute error far inside every bound's
- * absolute term, as the factor beside it (Beckmann's 1/cos⁴θ_h = (1 + α² x)² at x = tan²θ_h/α²)
- * grows far slower than e^-x falls. Every tier's exp hands the lanes below about −87.3 to the scalar built-in, and grazing
- * half vectors reach them on ordinary inputs: a third of the lanes at α = 0.3, where the
- * Beckmann shading kernel took 23 ns per element against GGX's 1.3. NaN stays NaN (the max
- * keeps it: src/simd/<isa>/vec.h). */
-static SC_INLINE vf exp_nonpositive(int tier, vf x)
+/* e^−x for x >= 0 (the Gaussian lobes of Ward and Beckmann, Beckmann's Λ), 0 beyond x = 87,
+ * where e^−x < 1.7e-38 (FLT_MIN is 1.2e-38): an absolute error far inside every bound's
+ * absolute term, as the factor beside it (Beckmann's 1/cos⁴θ_h = (1 + α² x)² at x =
+ * tan²θ_h/α²) grows far slower than e^−x falls. Every tier's exp hands the lanes below about
+ * −87.3 to the scalar built-in, and grazing half vectors reach them on ordinary inputs: a third
+ * of the lanes at α = 0.3, where the Beckmann shading kernel took 23 ns per element against
+ * GGX's 1.3. NaN stays NaN (the min keeps it: src/simd/<isa>/vec.h). */
+static SC_INLINE vf exp_minus(int tier, vf x)
 {
-    vf floor = vf_set1(-87.0f);
-    return vf_keep(vf_nlt(x, floor), light_exp(tier, vf_max(floor, x)));
+    vf ceiling = vf_set1(87.0f);
+    return vf_keep(vf_nlt(ceiling, x), light_exp(tier, vf_sub(vf_set1(0.0f), vf_min(ceiling, x))));
 }
 
 /* ---- one input, one output: attenuation of r and spot of cos θ_s ---- */
@@ -455,7 +455,7 @@ static SC_INLINE vf slope_exponent(int tier, const brdf_uniforms *u, const brdf_
  * 1/(4π α_x α_y) or 1/(π α_x α_y). */
 static SC_INLINE brdf_weights model_ward(int tier, const brdf_uniforms *u, const brdf_geometry *g)
 {
-    vf e = exp_nonpositive(tier, vf_sub(vf_set1(0.0f), slope_exponent(tier, u, g)));
+    vf e = exp_minus(tier, slope_exponent(tier, u, g));
     vf ci = cos_floor(g->nl), co = cos_floor(g->nv), den;
     if (u->form == SC_WARD_DUER) {
         den = vf_mul(ci, co);
@@ -552,7 +552,7 @@ static SC_INLINE vf beckmann_lambda(int tier, const brdf_uniforms *u, vf c, vf p
     vf t = tier_rcp(tier, vf_fma(vf_set1(0.5f), a, vf_set1(1.0f)));
     vf erfc_scaled = vf_mul(t, light_exp(tier, poly(t, erfc_c, 10)));
     vf tail = tier_rcp(tier, vf_mul(a, vf_set1(1.7724538509055160273f)));
-    vf e = exp_nonpositive(tier, vf_sub(vf_set1(0.0f), vf_mul(a, a)));
+    vf e = exp_minus(tier, vf_mul(a, a));
     return vf_mul(vf_mul(vf_set1(0.5f), e), vf_sub(tail, erfc_scaled));
 }
 
@@ -570,7 +570,7 @@ static SC_INLINE vf ndf(int tier, const brdf_uniforms *u, const brdf_geometry *g
         vf d = vf_fma(vf_set1(u->a2), hn2, g->s2);
         return vf_mul(vf_mul(vf_set1(u->a2 * inv_pi_f), hh2), tier_rcp(tier, vf_mul(d, d)));
     }
-    vf e = exp_nonpositive(tier, vf_sub(vf_set1(0.0f), slope_exponent(tier, u, g)));
+    vf e = exp_minus(tier, slope_exponent(tier, u, g));
     return vf_mul(vf_mul(e, hh2), tier_rcp(tier, vf_mul(vf_set1(pi_f * u->a2), vf_mul(hn2, hn2))));
 }
 

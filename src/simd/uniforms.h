@@ -48,9 +48,10 @@ typedef struct {
     float k[4];      /* the model's constants, named by sc_uniforms_brdf */
     float m, a2;     /* exponent; α_x α_y */
     float ax, ay;    /* α (>= 10^-4) */
-    unsigned lobe_m; /* the cosine lobe's exponent (phong m, blinn-phong m/2) when an integer
-                         * in 1..SC_LOBE_INT_MAX, else 0 */
-    float lobe_cutoff; /* 2^(−100/lobe_m): in the fast tiers bases below it give 0 */
+    /* the cosine lobe's exponent (phong m, blinn-phong m/2) when an integer in
+     * 1..SC_LOBE_INT_MAX, else 0, and 2^(−100/lobe_m): in the fast tiers bases below it give 0 */
+    unsigned lobe_m;
+    float lobe_cutoff;
 } sc_brdf_uniforms;
 
 void sc_uniforms_brdf(const sc_brdf *b, sc_brdf_uniforms *u);

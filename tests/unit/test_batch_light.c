@@ -168,7 +168,7 @@ static void exact_fresnel_ior(sc_brdf *b, double ior)
 
 /* Other exponents (integer ones by binary powering, the others, and those beyond
  * SC_LOBE_INT_MAX, by the tiers' pow: src/simd/light_impl.h, cos_lobe), σ, η, narrow Gaussian
- * lobes (exponents below −87 flush: exp_nonpositive), and m = 0 (pow(0, 0) = 1). */
+ * lobes (e^−x beyond x = 87 flushes: exp_minus), and m = 0 (pow(0, 0) = 1). */
 static void brdf_parameter_extremes_within_bounds(void **state)
 {
     (void)state;
