@@ -54,7 +54,7 @@ void sc_image_free(sc_image *img)
 {
     for (int c = 0; c < SC_IMAGE_MAX_CHANNELS; c++)
         free(img->channel[c]);
-    free(img->data);
+    sc_big_free(img->data);
     memset(img, 0, sizeof *img);
 }
 

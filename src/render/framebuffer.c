@@ -41,9 +41,9 @@ int sc_framebuffer_init(sc_framebuffer *fb, int width, int height)
 
 void sc_framebuffer_free(sc_framebuffer *fb)
 {
-    free(fb->rgba);
-    free(fb->depth);
-    free(fb->normal);
+    sc_big_free(fb->rgba);
+    sc_big_free(fb->depth);
+    sc_big_free(fb->normal);
     memset(fb, 0, sizeof *fb);
 }
 

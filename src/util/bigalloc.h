@@ -4,9 +4,13 @@
 
 #include <stddef.h>
 
-/* calloc(count, size), 0 on overflow or failure; released with free(). Arrays of 2 MiB or more
- * are aligned to 2 MiB and advised as huge pages (Linux madvise MADV_HUGEPAGE), then zeroed:
- * one page fault per 2 MiB instead of one per 4 KiB. */
+/* A zeroed array of count elements of size bytes, 0 on overflow or failure; released with
+ * sc_big_free. Arrays of 2 MiB or more are mappings aligned to 2 MiB and advised as huge pages
+ * (Linux madvise MADV_HUGEPAGE): one page fault per 2 MiB instead of one per 4 KiB, taken by
+ * the thread that first touches the page. */
 void *sc_big_calloc(size_t count, size_t size);
+
+/* Releases an array from sc_big_calloc; nothing for 0. */
+void sc_big_free(void *array);
 
 #endif
