@@ -8,8 +8,9 @@
  *   sc_shading                     flat | gouraud | phong | exact
  *   sc_shading_parse, sc_shading_name
  *   sc_framebuffer                 RGBA, view depth and shading normal per pixel
- *   sc_framebuffer_init, _free
- *   sc_render_image                a framebuffer as an image (R G B A [Z] [N.X N.Y N.Z])
+ *   sc_framebuffer_init, _free     every plane; _init_planes: RGBA and the planes asked for
+ *   sc_render_image                a framebuffer as an image (R G B A [Z] [N.X N.Y N.Z]);
+ *                                  _take: the same, taking the RGBA array when that is all
  *   sc_render                      rasterize and shade a mesh, tiles spread over threads
  *   sc_render_compare              RMSE and maximum error of an image against a reference
  *
@@ -67,17 +68,30 @@ const char *sc_shading_name(sc_shading s);
 typedef struct {
     int width, height;
     float *rgba;   /* 4 per pixel, row 0 the top; A = 1 where a triangle covers, else all 0 */
-    float *depth;  /* view-space depth (along the view axis), +Inf where nothing is drawn */
-    float *normal; /* 3 per pixel: the unit normal the pixel was shaded with, 0 where empty */
+    float *depth;  /* view-space depth (along the view axis), +Inf where nothing is drawn;
+                      NULL when not asked for */
+    float *normal; /* 3 per pixel: the unit normal the pixel was shaded with, 0 where empty;
+                      NULL when not asked for */
 } sc_framebuffer;
 
-/* 0, or -1 (size outside 1..SC_RENDER_MAX_SIDE or above SC_RENDER_MAX_PIXELS, no memory). */
+/* The planes besides RGBA. A render writes only those the framebuffer has: a plane nobody
+ * reads would cost its memory's first touch (a 2048x2048 render's depth and normals are
+ * 64 MiB that the kernel zeroes page by page). */
+enum { SC_FRAMEBUFFER_DEPTH = 1, SC_FRAMEBUFFER_NORMAL = 2, SC_FRAMEBUFFER_ALL = 3 };
+
+/* Zeroed RGBA plus the planes in the mask `planes`; sc_framebuffer_init: every plane.
+ * 0, or -1 (size outside 1..SC_RENDER_MAX_SIDE or above SC_RENDER_MAX_PIXELS, planes outside
+ * SC_FRAMEBUFFER_ALL, no memory). */
+int sc_framebuffer_init_planes(sc_framebuffer *fb, int width, int height, int planes);
 int sc_framebuffer_init(sc_framebuffer *fb, int width, int height);
 void sc_framebuffer_free(sc_framebuffer *fb);
 
 /* The framebuffer as an image with channels R, G, B, A, then Z (the depth) if depth, then N.X,
- * N.Y, N.Z (the normal) if normals. 0, or -1 (out of memory). */
+ * N.Y, N.Z (the normal) if normals. 0, or -1 (out of memory, or a plane asked for that fb
+ * lacks). sc_render_image_take gives the same image, but when it has only R, G, B and A it
+ * takes fb's RGBA array instead of copying it (fb->rgba is then NULL). */
 int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *out);
+int sc_render_image_take(sc_framebuffer *fb, int depth, int normals, sc_image *out);
 
 /* Called after each tile (from the worker threads, one at a time). */
 typedef void sc_render_progress_fn(void *ctx, int tiles_done, int tiles_total);
@@ -97,8 +111,8 @@ typedef struct {
 } sc_render_params;
 
 /* Draws into fb (initialized; cleared here, tile by tile: after a failure its pixels are
- * unspecified). 0, or -1 with err (invalid camera, a mesh without the normals or uv the shading
- * needs, exact without a surface, out of memory). */
+ * unspecified), into the planes it has. 0, or -1 with err (invalid camera, a mesh without the
+ * normals or uv the shading needs, exact without a surface, fb without RGBA, out of memory). */
 int sc_render(const sc_render_params *p, sc_framebuffer *fb, char *err, size_t errsize);
 
 typedef struct {

@@ -503,11 +503,21 @@ static int write_exr(const render_options *o, const sc_image *img, const char *p
     return SC_EXIT_OK;
 }
 
-static int write_image(const sc_framebuffer *fb, const render_options *o, const char *path,
+/* A framebuffer with the planes the image will have. */
+static int init_framebuffer(const render_options *o, sc_framebuffer *fb)
+{
+    int planes = (o->depth ? SC_FRAMEBUFFER_DEPTH : 0) | (o->normals ? SC_FRAMEBUFFER_NORMAL : 0);
+    return sc_framebuffer_init_planes(fb, o->width, o->height, planes);
+}
+
+/* Writes fb's image; take: the image may take fb's RGBA array (sc_render_image_take). */
+static int write_image(sc_framebuffer *fb, int take, const render_options *o, const char *path,
                        const char *mode)
 {
     sc_image img;
-    if (sc_render_image(fb, o->depth, o->normals, &img) < 0) {
+    int bad = take ? sc_render_image_take(fb, o->depth, o->normals, &img)
+                   : sc_render_image(fb, o->depth, o->normals, &img);
+    if (bad) {
         sc_error("render: out of memory");
         return SC_EXIT_RUNTIME;
     }
@@ -560,7 +570,7 @@ static int render_one(const render_options *o, const shade_setup *s, const sc_sc
     int status = o->mesh_path ? load_obj(o->mesh_path, &mesh) : load_surface(o, &surface);
     if (status == SC_EXIT_OK && surface)
         status = tessellate(surface, o->triangles, &mesh);
-    if (status == SC_EXIT_OK && sc_framebuffer_init(&fb, o->width, o->height) < 0) {
+    if (status == SC_EXIT_OK && init_framebuffer(o, &fb) < 0) {
         sc_error("render: out of memory for a %dx%d image", o->width, o->height);
         status = SC_EXIT_RUNTIME;
     }
@@ -586,7 +596,7 @@ static int render_one(const render_options *o, const shade_setup *s, const sc_sc
         status = brdf_file_status(&scene->model, "render");
     if (status == SC_EXIT_OK) {
         warn_overflow(&fb, o);
-        status = write_image(&fb, o, o->output, sc_shading_name(o->shading));
+        status = write_image(&fb, 1, o, o->output, sc_shading_name(o->shading));
     }
     sc_framebuffer_free(&fb);
     sc_mesh_free(&mesh);
@@ -648,13 +658,13 @@ static int write_error_map(const render_options *o, const sc_framebuffer *ref, c
 }
 
 /* Writes step k's image (and its error map against ref unless it is the reference). */
-static int write_step(const render_options *o, int k, const sc_framebuffer *fb,
-                      const sc_framebuffer *ref, float *map, compare_row *row)
+static int write_step(const render_options *o, int k, sc_framebuffer *fb, const sc_framebuffer *ref,
+                      float *map, compare_row *row)
 {
     char name[64], path[4096];
     step_name(k, name, sizeof name);
     snprintf(path, sizeof path, "%s/render-%s.exr", o->output_dir, name);
-    int status = write_image(fb, o, path, sc_shading_name(plan[k].shading));
+    int status = write_image(fb, 0, o, path, sc_shading_name(plan[k].shading));
     sc_render_compare(fb, ref, map, &row->error);
     if (status == SC_EXIT_OK && k != REFERENCE) {
         snprintf(path, sizeof path, "%s/error-%s.exr", o->output_dir, name);
@@ -735,7 +745,7 @@ static int prepare_compare(const render_options *o, compare_state *c)
         return status;
     int ok = (c->map = malloc((size_t)o->width * (size_t)o->height * sizeof *c->map)) != NULL;
     for (int k = 0; ok && k < STEPS; k++)
-        ok = sc_framebuffer_init(&c->images[k], o->width, o->height) == 0;
+        ok = init_framebuffer(o, &c->images[k]) == 0;
     if (!ok) {
         sc_error("render: out of memory for the comparison at %dx%d", o->width, o->height);
         return SC_EXIT_RUNTIME;

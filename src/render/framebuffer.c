@@ -20,23 +20,29 @@ int sc_shading_parse(const char *name, sc_shading *out)
 
 const char *sc_shading_name(sc_shading s) { return shading_names[s]; }
 
-int sc_framebuffer_init(sc_framebuffer *fb, int width, int height)
+int sc_framebuffer_init_planes(sc_framebuffer *fb, int width, int height, int planes)
 {
     memset(fb, 0, sizeof *fb);
     if (width < 1 || height < 1 || width > SC_RENDER_MAX_SIDE || height > SC_RENDER_MAX_SIDE ||
-        (long)width * height > SC_RENDER_MAX_PIXELS)
+        (long)width * height > SC_RENDER_MAX_PIXELS || planes < 0 || planes > SC_FRAMEBUFFER_ALL)
         return -1;
     size_t n = (size_t)width * (size_t)height;
+    int depth = planes & SC_FRAMEBUFFER_DEPTH, normal = planes & SC_FRAMEBUFFER_NORMAL;
     fb->width = width;
     fb->height = height;
     fb->rgba = sc_big_calloc(4 * n, sizeof *fb->rgba);
-    fb->depth = sc_big_calloc(n, sizeof *fb->depth);
-    fb->normal = sc_big_calloc(3 * n, sizeof *fb->normal);
-    if (!fb->rgba || !fb->depth || !fb->normal) {
+    fb->depth = depth ? sc_big_calloc(n, sizeof *fb->depth) : NULL;
+    fb->normal = normal ? sc_big_calloc(3 * n, sizeof *fb->normal) : NULL;
+    if (!fb->rgba || (depth && !fb->depth) || (normal && !fb->normal)) {
         sc_framebuffer_free(fb);
         return -1;
     }
     return 0;
+}
+
+int sc_framebuffer_init(sc_framebuffer *fb, int width, int height)
+{
+    return sc_framebuffer_init_planes(fb, width, height, SC_FRAMEBUFFER_ALL);
 }
 
 void sc_framebuffer_free(sc_framebuffer *fb)
@@ -72,7 +78,8 @@ void sc_render_compare(const sc_framebuffer *img, const sc_framebuffer *ref, flo
     out->pixels = pixels;
 }
 
-int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *out)
+/* An image of fb's size with the channels R, G, B, A, [Z], [N.X, N.Y, N.Z]; 0, or -1. */
+static int image_for(const sc_framebuffer *fb, int depth, int normals, sc_image *out)
 {
     const char *names[8] = {"R", "G", "B", "A"};
     int n = 4;
@@ -83,8 +90,18 @@ int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *
         names[n++] = "N.Y";
         names[n++] = "N.Z";
     }
-    if (sc_image_init(out, fb->width, fb->height, n, names) < 0)
+    if (!fb->rgba || (depth && !fb->depth) || (normals && !fb->normal)) {
+        memset(out, 0, sizeof *out);
         return -1;
+    }
+    return sc_image_init(out, fb->width, fb->height, n, names);
+}
+
+int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *out)
+{
+    if (image_for(fb, depth, normals, out) < 0)
+        return -1;
+    int n = out->n_channels;
     size_t pixels = (size_t)fb->width * (size_t)fb->height;
     for (size_t i = 0; i < pixels; i++) {
         float *px = out->data + i * (size_t)n;
@@ -94,5 +111,19 @@ int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *
         if (normals)
             memcpy(px + n - 3, fb->normal + 3 * i, 3 * sizeof *px);
     }
+    return 0;
+}
+
+/* Both arrays come from sc_big_calloc (util/bigalloc.h), so sc_image_free releases fb's; the
+ * image's own array was never touched, so dropping it costs no page of memory. */
+int sc_render_image_take(sc_framebuffer *fb, int depth, int normals, sc_image *out)
+{
+    if (depth || normals || !fb->rgba)
+        return sc_render_image(fb, depth, normals, out);
+    if (image_for(fb, 0, 0, out) < 0)
+        return -1;
+    sc_big_free(out->data);
+    out->data = fb->rgba;
+    fb->rgba = NULL;
     return 0;
 }

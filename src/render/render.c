@@ -261,12 +261,14 @@ static void shade_row(const render_job *job, const tile_buffer *buf, int row, in
     for (int k = 0; k < n; k++) {
         int i = row * TILE + x_of[k];
         size_t at = (size_t)(buf->y0 + row) * (size_t)fb->width + (size_t)(buf->x0 + x_of[k]);
-        for (int c = 0; c < 3; c++) {
+        for (int c = 0; c < 3; c++)
             fb->rgba[4 * at + c] = rgb[3 * k + c];
-            fb->normal[3 * at + c] = (float)in[k].normal[c];
-        }
         fb->rgba[4 * at + 3] = 1.0f;
-        fb->depth[at] = (float)(1.0 / buf->inv_w[i]);
+        if (fb->normal)
+            for (int c = 0; c < 3; c++)
+                fb->normal[3 * at + c] = (float)in[k].normal[c];
+        if (fb->depth)
+            fb->depth[at] = (float)(1.0 / buf->inv_w[i]);
     }
 }
 
@@ -294,8 +296,9 @@ static void clear_tile(sc_framebuffer *fb, int x0, int y0, int x1, int y1)
     for (int y = y0; y <= y1; y++) {
         size_t at = (size_t)y * (size_t)fb->width + (size_t)x0;
         memset(fb->rgba + 4 * at, 0, 4 * w * sizeof *fb->rgba);
-        memset(fb->normal + 3 * at, 0, 3 * w * sizeof *fb->normal);
-        for (size_t i = 0; i < w; i++)
+        if (fb->normal)
+            memset(fb->normal + 3 * at, 0, 3 * w * sizeof *fb->normal);
+        for (size_t i = 0; fb->depth && i < w; i++)
             fb->depth[at + i] = INFINITY;
     }
 }
@@ -384,9 +387,14 @@ static int run_tiles(render_job *job)
 
 /* ---- entry ---- */
 
-static int check_inputs(const sc_render_params *p, char *err, size_t errsize)
+static int check_inputs(const sc_render_params *p, const sc_framebuffer *fb, char *err,
+                        size_t errsize)
 {
     const sc_mesh *m = p->mesh;
+    if (!fb->rgba) {
+        snprintf(err, errsize, "render: the framebuffer has no colour array");
+        return -1;
+    }
     if (sc_camera_validate(&p->camera, err, errsize) < 0)
         return -1;
     for (long i = 0; i < 3L * m->n_triangles; i++)
@@ -420,7 +428,7 @@ static void free_job(render_job *job)
 
 int sc_render(const sc_render_params *p, sc_framebuffer *fb, char *err, size_t errsize)
 {
-    if (check_inputs(p, err, errsize) < 0)
+    if (check_inputs(p, fb, err, errsize) < 0)
         return -1;
     render_job job = {.p = p, .mesh = p->mesh, .fb = fb};
     render_view_make(&p->camera, fb->width, fb->height, &job.view);

@@ -246,6 +246,48 @@ static void threads_give_the_same_image(void **state)
     sc_surface_free(s);
 }
 
+/* A framebuffer without depth or normals renders the same colours as one with every plane, and
+ * sc_render_image_take hands its RGBA array to the image (no copy) with the same pixels as
+ * sc_render_image; planes it lacks cannot be asked of it. */
+static void colour_only_framebuffer_renders_and_moves(void **state)
+{
+    (void)state;
+    enum { S = 70 };
+    sc_surface *s = sphere();
+    sc_mesh m;
+    scene_box b;
+    tessellate(s, 800, &m);
+    make_scene(&b, "point pos=2,-3,3 I=20", "blinn-phong m=40");
+    sc_framebuffer all, colour, bad;
+    assert_int_equal(sc_framebuffer_init(&all, S, S), 0);
+    assert_int_equal(sc_framebuffer_init_planes(&colour, S, S, 0), 0);
+    assert_null(colour.depth);
+    assert_null(colour.normal);
+    assert_int_equal(sc_framebuffer_init_planes(&bad, S, S, SC_FRAMEBUFFER_ALL + 1), -1);
+    assert_int_equal(sc_framebuffer_init_planes(&bad, S, S, -1), -1);
+    render_ok(&m, s, &b.scene, SC_SHADING_PHONG, &side_view, 2, &all);
+    render_ok(&m, s, &b.scene, SC_SHADING_PHONG, &side_view, 2, &colour);
+    assert_memory_equal(all.rgba, colour.rgba, 4 * S * S * sizeof(float));
+    sc_image copied, taken, none;
+    assert_int_equal(sc_render_image(&colour, 1, 0, &none), -1);
+    assert_int_equal(sc_render_image_take(&colour, 0, 1, &none), -1);
+    assert_int_equal(sc_render_image(&all, 0, 0, &copied), 0);
+    const float *array = colour.rgba;
+    assert_int_equal(sc_render_image_take(&colour, 0, 0, &taken), 0);
+    assert_ptr_equal(taken.data, array);
+    assert_null(colour.rgba);
+    assert_int_equal(taken.n_channels, 4);
+    assert_string_equal(taken.channel[3], "A");
+    assert_memory_equal(taken.data, copied.data, 4 * S * S * sizeof(float));
+    assert_int_equal(sc_render_image_take(&colour, 0, 0, &none), -1); /* nothing left */
+    sc_image_free(&taken);
+    sc_image_free(&copied);
+    sc_framebuffer_free(&colour);
+    sc_framebuffer_free(&all);
+    sc_mesh_free(&m);
+    sc_surface_free(s);
+}
+
 /* highp shading of scenes the batch kernel computes goes through it (render/shade_span.c):
  * the image matches the double sc_shade image within the kernel's accurate-tier bound
  * (relative 2^-16 plus the float rounding of the inputs), for each of its BRDFs, with a
@@ -622,6 +664,12 @@ static void invalid_inputs_fail_cleanly(void **state)
     p.camera.eye[2] = 0.0;
     assert_int_equal(sc_render(&p, &fb, err, sizeof err), -1);
     assert_non_null(strstr(err, "equals --at"));
+    p.camera = above;
+    sc_image taken;
+    assert_int_equal(sc_render_image_take(&fb, 0, 0, &taken), 0);
+    assert_int_equal(sc_render(&p, &fb, err, sizeof err), -1); /* its colours were taken */
+    assert_non_null(strstr(err, "colour array"));
+    sc_image_free(&taken);
     sc_framebuffer_free(&fb);
     assert_int_equal(sc_framebuffer_init(&fb, 0, 8), -1);
     assert_int_equal(sc_framebuffer_init(&fb, SC_RENDER_MAX_SIDE, SC_RENDER_MAX_SIDE), -1);
@@ -634,6 +682,7 @@ int main(void)
         cmocka_unit_test(phong_matches_ray_traced_point),
         cmocka_unit_test(z_buffer_keeps_nearest),
         cmocka_unit_test(threads_give_the_same_image),
+        cmocka_unit_test(colour_only_framebuffer_renders_and_moves),
         cmocka_unit_test(batch_kernel_matches_sc_shade),
         cmocka_unit_test(other_scenes_keep_sc_shade),
         cmocka_unit_test(render_tiers_within_their_bounds),
