@@ -401,16 +401,18 @@ static int area_uniforms_of(const sc_scene *s, int k, sc_shade_uniforms *u, char
 }
 
 /* The straight-line variant of the kernel for u's lights (src/simd/uniforms.h), 0 for the
- * generic loop: 1..4 lights of one shape, directional or point with inverse-square falloff,
- * with one of the kernel's own lobes. */
+ * generic loop: 1..4 lights of one shape, directional, or point or spot with inverse-square
+ * falloff, with one of the kernel's own lobes. */
 static int variant_of(const sc_shade_uniforms *u)
 {
     if (u->lobe == SC_LOBE_MODEL || u->n_lights < 1 || u->n_lights > SC_SHADE_FIXED_MAX)
         return 0;
     const sc_light_uniforms *first = &u->lights[0];
-    int shape = first->kind == SC_LIGHT_DIRECTIONAL                                        ? 0
-                : first->kind == SC_LIGHT_POINT && first->atten == SC_ATTEN_INVERSE_SQUARE ? 1
-                                                                                           : -1;
+    int inverse_square = first->atten == SC_ATTEN_INVERSE_SQUARE;
+    int shape = first->kind == SC_LIGHT_DIRECTIONAL               ? 0
+                : first->kind == SC_LIGHT_POINT && inverse_square ? 1
+                : first->kind == SC_LIGHT_SPOT && inverse_square  ? 2
+                                                                  : -1;
     for (int k = 1; k < u->n_lights && shape >= 0; k++)
         if (u->lights[k].kind != first->kind || u->lights[k].atten != first->atten)
             shape = -1;

@@ -359,9 +359,28 @@ static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane, int widt
     run_uniforms(a, 9, 3, lane, &c, width);
 }
 
-/* A loop of the generic lane, and one of a fixed shape: count lights of shape index `si`
- * (src/simd/uniforms.h: 0 directional, 1 point with inverse-square falloff), two vectors a
- * step. */
+/* The fixed shapes of src/simd/uniforms.h's variants, by index. */
+enum { SHAPE_SPOT = 2 };
+static const light_shape fixed_shapes[] = {{SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE},
+                                           {SC_LIGHT_POINT, SC_ATTEN_INVERSE_SQUARE},
+                                           {SC_LIGHT_SPOT, SC_ATTEN_INVERSE_SQUARE}};
+
+/* Vectors a step of the fixed shape si: spot lights one (shade_tier), the others two
+ * (shade_pair). Spot pairs ran 1-3% faster than one vector a step (bench shade, blinn-phong 1s)
+ * and took the shading kernels 23% longer to compile: the spot factor's cone kinds and powers
+ * are much code to inline twice per light. */
+static SC_INLINE int fixed_width(int si) { return si == SHAPE_SPOT ? 1 : 2; }
+
+static SC_INLINE void shade_fixed(int tier, sc_lobe lobe, int si, int count, const float *const *in,
+                                  float *const *out, size_t i, const shade_vecs *c)
+{
+    if (fixed_width(si) == 1)
+        shade_tier(tier, lobe, fixed_shapes[si], count, in, out, i, c);
+    else
+        shade_pair(tier, lobe, fixed_shapes[si], count, in, out, i, c);
+}
+
+/* A loop of the generic lane, and one of a fixed shape: count lights of shape index `si`. */
 #define SHADE_LANE(name, tier, lobe)                                                               \
     static SC_INLINE void name##_lane(const float *const *in, float *const *out, size_t i,         \
                                       const void *c)                                               \
@@ -374,13 +393,11 @@ static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane, int widt
     static SC_INLINE void name##_##si##_##count##_lane(const float *const *in, float *const *out,  \
                                                        size_t i, const void *c)                    \
     {                                                                                              \
-        static const light_shape shapes[] = {{SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE},                \
-                                             {SC_LIGHT_POINT, SC_ATTEN_INVERSE_SQUARE}};           \
-        shade_pair(tier, lobe, shapes[si], count, in, out, i, c);                                  \
+        shade_fixed(tier, lobe, si, count, in, out, i, c);                                         \
     }                                                                                              \
     static void name##_##si##_##count(const sc_batch_args *a)                                      \
     {                                                                                              \
-        shade_run(a, name##_##si##_##count##_lane, 2);                                             \
+        shade_run(a, name##_##si##_##count##_lane, fixed_width(si));                               \
     }
 #define SHADE_FIXED_LANES(name, tier, lobe)                                                        \
     SHADE_LANE(name, tier, lobe)                                                                   \
@@ -391,11 +408,15 @@ static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane, int widt
     SHADE_FIXED_LANE(name, tier, lobe, 1, 1)                                                       \
     SHADE_FIXED_LANE(name, tier, lobe, 1, 2)                                                       \
     SHADE_FIXED_LANE(name, tier, lobe, 1, 3)                                                       \
-    SHADE_FIXED_LANE(name, tier, lobe, 1, 4)
+    SHADE_FIXED_LANE(name, tier, lobe, 1, 4)                                                       \
+    SHADE_FIXED_LANE(name, tier, lobe, 2, 1)                                                       \
+    SHADE_FIXED_LANE(name, tier, lobe, 2, 2)                                                       \
+    SHADE_FIXED_LANE(name, tier, lobe, 2, 3)                                                       \
+    SHADE_FIXED_LANE(name, tier, lobe, 2, 4)
 #define SHADE_VARIANTS(name)                                                                       \
     {                                                                                              \
         name, name##_0_1, name##_0_2, name##_0_3, name##_0_4, name##_1_1, name##_1_2, name##_1_3,  \
-            name##_1_4                                                                             \
+            name##_1_4, name##_2_1, name##_2_2, name##_2_3, name##_2_4                             \
     }
 /* One loop per lobe and variant, chosen once per call from what the plan resolved (its lobe
  * and its variant); params is a plan. */

@@ -91,11 +91,11 @@ typedef struct {
     sc_area_uniforms area; /* sphere, tube, disk, rect (color: L_e) */
 } sc_light_uniforms;
 
-/* The shading kernel's straight-line variants: 1..SC_SHADE_FIXED_MAX lights, all directional
- * or all point lights with inverse-square falloff, with the kernel's own lobes. Variant 0 is
- * the generic loop; variant 1 + 4 s + (count − 1) is count lights of shape s (0 directional,
- * 1 point). */
-enum { SC_SHADE_FIXED_MAX = 4, SC_SHADE_VARIANTS = 1 + 2 * SC_SHADE_FIXED_MAX };
+/* The shading kernel's straight-line variants: 1..SC_SHADE_FIXED_MAX lights, all directional,
+ * all point or all spot lights (of any spot kinds), these two with inverse-square falloff,
+ * with the kernel's own lobes. Variant 0 is the generic loop; variant 1 + 4 s + (count − 1)
+ * is count lights of shape s (0 directional, 1 point, 2 spot). */
+enum { SC_SHADE_FIXED_MAX = 4, SC_SHADE_VARIANTS = 1 + 3 * SC_SHADE_FIXED_MAX };
 
 typedef struct {
     sc_light_uniforms lights[SC_BATCH_MAX_LIGHTS];

@@ -25,6 +25,7 @@
 
 #include "batch/reference.h"
 #include "batch/reference_light.h"
+#include "simd/uniforms.h"
 #include "tests/support/batch_buffers.h"
 #include "tests/unit/scale.h"
 
@@ -1034,11 +1035,12 @@ static void shade_grazing_mirror_within_bounds(void **state)
 
 /* ---- the straight-line variants ---- */
 
-/* A plan of k lights of one shape (1..4 directional, or point with inverse-square falloff)
- * runs straight-line code; the same lights plus one of the other kind with intensity 0 run the
- * generic loop, whose extra term adds exactly 0: both give the same bits, every tier and
- * instruction set, for each of the kernel's own lobes (the generic loop is the one
- * tests/unit/test_batch.c bounds on 10^6 inputs). */
+/* A plan of k lights of one shape (1..4 directional, point or spot, these two with
+ * inverse-square falloff; the spots of the three kinds in turn) runs straight-line code; the
+ * same lights plus one of another kind with intensity 0 run the generic loop, whose extra term
+ * adds exactly 0: both give the same bits, every tier and instruction set, for each of the
+ * kernel's own lobes (the generic loop is the one tests/unit/test_batch.c bounds on 10^6
+ * inputs). */
 static void fixed_variants_match_the_loop(void **state)
 {
     (void)state;
@@ -1049,12 +1051,14 @@ static void fixed_variants_match_the_loop(void **state)
     for (int j = 0; j < 3; j++)
         assert_non_null(loop.out[j] = malloc(N_PLAN * sizeof(float)));
     plan_points(&a, N_PLAN);
-    for (int shape = 0; shape < 2; shape++)
+    static const char *const shape_names[] = {"directional", "point", "spot"};
+    for (int shape = 0; shape < 3; shape++)
         for (int count = 1; count <= 4; count++)
             for (size_t b = 0; b < sizeof kinds / sizeof kinds[0]; b++) {
                 sc_light lights[SC_BATCH_MAX_LIGHTS];
                 sc_scene fixed, generic;
-                sc_batch_example_scene(kinds[b], shape ? 0 : count + 1, shape ? count + 1 : 0, 0,
+                sc_batch_example_scene(kinds[b], shape == 0 ? count + 1 : 0,
+                                       shape == 1 ? count + 1 : 0, shape == 2 ? count + 1 : 0,
                                        lights, &generic);
                 sc_light *extra = &lights[count];
                 sc_light_init(extra, shape ? SC_LIGHT_DIRECTIONAL : SC_LIGHT_POINT);
@@ -1072,14 +1076,16 @@ static void fixed_variants_match_the_loop(void **state)
                                                                   why, sizeof why);
                         assert_non_null(pf);
                         assert_non_null(pg);
+                        assert_int_equal(sc_batch_plan_uniforms(pf)->variant,
+                                         1 + SC_SHADE_FIXED_MAX * shape + count - 1);
+                        assert_int_equal(sc_batch_plan_uniforms(pg)->variant, 0);
                         sc_batch_plan_shade(pf, (const float *const *)a.in, a.out, N_PLAN);
                         sc_batch_plan_shade(pg, (const float *const *)a.in, loop.out, N_PLAN);
                         for (int j = 0; j < 3; j++)
                             if (memcmp(a.out[j], loop.out[j], N_PLAN * sizeof(float)) != 0)
                                 fail_msg("%d %s lights, %s, %s %s: the variant's bits differ",
-                                         count, shape ? "point" : "directional",
-                                         sc_brdf_kind_name(kinds[b]), tiers[t],
-                                         sc_isa_name((sc_isa)isa));
+                                         count, shape_names[shape], sc_brdf_kind_name(kinds[b]),
+                                         tiers[t], sc_isa_name((sc_isa)isa));
                         sc_batch_plan_free(pf);
                         sc_batch_plan_free(pg);
                     }
