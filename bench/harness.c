@@ -98,13 +98,12 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
     else if (b->kind == SC_BRDF_COOK_TORRANCE)
         lobe = 6 + 3 + 2 * 4 + 5 + t.rcp + (fast ? 0 : 3 + 2) + 2 + 4 + 1 + 5;
     /* each light: n·l (3), the lit mask (min, compare), the weight select (1), acc += w E
-     * c_diff/π (3 FMA); in the generic loop (a scene of no straight-line variant) also its
-     * colours per vector (light_vecs_of: 6 mul); a directional light in the fast tiers takes
-     * n·l of the loaded vectors, times the inverse length (1 mul) */
-    int generic = sc_batch_plan_uniforms(plan)->variant == 0;
+     * c_diff/π (3 FMA), its colours made once per call (shade_vecs_make), in the generic loop
+     * too; a directional light in the fast tiers takes n·l of the loaded vectors, times the
+     * inverse length (1 mul) */
     for (int k = 0; k < s->n_lights; k++) {
         sc_light_kind kind = s->lights[k].kind;
-        ops += 9 + (generic ? 6 : 0) + lobe;
+        ops += 9 + lobe;
         if (fast && kind == SC_LIGHT_DIRECTIONAL)
             ops += 1;
         ops += kind == SC_LIGHT_POINT ? point : kind == SC_LIGHT_SPOT ? spot : 0;
