@@ -220,6 +220,11 @@ static SC_INLINE v3 unit_and_inverse_square(int tier, v3 d, vf r2, vf *falloff)
     return v3_normalize_dd(tier, d, r2);
 }
 
+static SC_INLINE v3 v3_select(vm m, v3 a, v3 b)
+{
+    return (v3){vf_select(m, a.x, b.x), vf_select(m, a.y, b.y), vf_select(m, a.z, b.z)};
+}
+
 /* Direction to a light and its irradiance factor: 1 (directional), or f_d times the spot
  * factor; at the light itself (r = 0) l = n, as light.h has it. */
 static SC_INLINE v3 light_dir(int tier, light_shape shape, const sc_light_uniforms *lt,
@@ -239,19 +244,14 @@ static SC_INLINE v3 light_dir(int tier, light_shape shape, const sc_light_unifor
         *falloff = falloff_of(tier, shape, lt, r2);
         l = v3_normalize_dd(tier, d, r2);
     }
-    vm at_light = vf_eq(r2, vf_set1(0.0f));
-    l = (v3){vf_select(at_light, n.x, l.x), vf_select(at_light, n.y, l.y),
-             vf_select(at_light, n.z, l.z)};
+    vm at_light = vf_eq(r2, vf_set1(0.0f)); /* rare: a branch, not three blends a vector */
+    if (vm_any(at_light))
+        l = v3_select(at_light, n, l);
     if (shape.kind == SC_LIGHT_SPOT) {
         vf cos_s = vf_sub(vf_set1(0.0f), v3_dot(l, lv->dir));
         *falloff = vf_mul(*falloff, spot_factor(tier, lt->spot, cos_s, &lt->spot_u));
     }
     return l;
-}
-
-static SC_INLINE v3 v3_select(vm m, v3 a, v3 b)
-{
-    return (v3){vf_select(m, a.x, b.x), vf_select(m, a.y, b.y), vf_select(m, a.z, b.z)};
 }
 
 /* acc + an area light's term (src/simd/area_impl.h, included after this file) */
