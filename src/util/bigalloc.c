@@ -21,8 +21,6 @@ typedef struct {
     size_t mapped; /* the mapping's length; 0: from calloc */
 } big_header;
 
-static size_t round_up(size_t n, size_t to) { return (n + to - 1) / to * to; }
-
 static void *with_header(void *base, size_t mapped, char *array)
 {
     big_header *h = (big_header *)(array - HEADER);
@@ -31,14 +29,40 @@ static void *with_header(void *base, size_t mapped, char *array)
     return array;
 }
 
+#if !defined(MAP_ANONYMOUS) && defined(MAP_ANON)
+#define MAP_ANONYMOUS MAP_ANON /* the BSDs' and macOS's older name */
+#endif
+
+/* Sanitizers see overflows and leaks of calloc's blocks, not of mappings: their builds take
+ * calloc for every size. */
+#if defined(__SANITIZE_ADDRESS__)
+#define BIG_USE_MMAP 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
+#define BIG_USE_MMAP 0
+#endif
+#endif
+#ifndef BIG_USE_MMAP
+#ifdef MAP_ANONYMOUS
+#define BIG_USE_MMAP 1
+#else
+#define BIG_USE_MMAP 0
+#endif
+#endif
+
+#if BIG_USE_MMAP
+static size_t round_up(size_t n, size_t to) { return (n + to - 1) / to * to; }
+
 /* A mapping whose array starts on a 2 MiB boundary and ends on one, with one page before it
  * for the header; the slack before and after is unmapped again. 0 where mmap fails. */
 static void *map_huge(size_t bytes)
 {
-    size_t page = (size_t)sysconf(_SC_PAGESIZE), span = round_up(bytes, HUGE_PAGE);
-    if (span < bytes || span > SIZE_MAX - 2 * (size_t)HUGE_PAGE)
+    long page_size = sysconf(_SC_PAGESIZE);
+    size_t page = (size_t)page_size, span = round_up(bytes, HUGE_PAGE);
+    if (page_size < HEADER || page > HUGE_PAGE || span < bytes ||
+        span > SIZE_MAX - (size_t)HUGE_PAGE)
         return NULL;
-    size_t len = span + 2 * (size_t)HUGE_PAGE;
+    size_t len = span + HUGE_PAGE; /* the array starts at most a huge page past the base */
     char *base = mmap(NULL, len, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (base == MAP_FAILED)
         return NULL;
@@ -53,19 +77,22 @@ static void *map_huge(size_t bytes)
 #endif
     return with_header(start, (size_t)(end - start), array);
 }
+#endif
 
 void *sc_big_calloc(size_t count, size_t size)
 {
     if (size && count > SIZE_MAX / size)
         return NULL;
     size_t bytes = count * size;
+    if (bytes > SIZE_MAX - HUGE_PAGE)
+        return NULL;
+#if BIG_USE_MMAP
     if (bytes >= HUGE_PAGE) {
         void *array = map_huge(bytes);
         if (array)
             return array;
     }
-    if (bytes > SIZE_MAX - HEADER)
-        return NULL;
+#endif
     char *base = calloc(1, HEADER + (bytes ? bytes : 1));
     return base ? with_header(base, 0, base + HEADER) : NULL;
 }

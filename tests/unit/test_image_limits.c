@@ -17,8 +17,35 @@
 #include "shadecalc/file.h"
 #include "shadecalc/image.h"
 #include "shadecalc/sweep.h"
+#include "util/bigalloc.h"
 
 static const char *const rgba[] = {"R", "G", "B", "A"};
+
+/* sc_big_calloc (util/bigalloc.h) on both sides of its 2 MiB switch to mappings: every byte
+ * zero and writable, the array aligned at least as calloc's, each array released by
+ * sc_big_free (under AddressSanitizer, calloc's blocks all: a leak or overrun would show);
+ * sizes beyond size_t refused. */
+static void big_arrays_are_zeroed_and_released(void **state)
+{
+    (void)state;
+    static const size_t sizes[] = {
+        0, 1, 4095, (2u << 20) - 1, 2u << 20, (2u << 20) + 1, (5u << 20) + 3};
+    for (int round = 0; round < 3; round++) /* reused memory comes back zeroed too */
+        for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
+            unsigned char *p = sc_big_calloc(sizes[k], 1);
+            assert_non_null(p);
+            assert_int_equal((uintptr_t)p % 16, 0);
+            for (size_t i = 0; i < sizes[k]; i++)
+                if (p[i] != 0)
+                    fail_msg("size %zu: byte %zu is %d", sizes[k], i, p[i]);
+            memset(p, 0xa5, sizes[k]);
+            sc_big_free(p);
+        }
+    assert_null(sc_big_calloc(SIZE_MAX / 2, 4));
+    assert_null(sc_big_calloc(1, SIZE_MAX));
+    assert_null(sc_big_calloc(SIZE_MAX - 100, 1));
+    sc_big_free(NULL);
+}
 
 /* INT_MAX² pixels of 4 floats is 2^66 bytes: more than size_t holds on a 64-bit machine. */
 static void image_size_overflow_is_refused(void **state)
@@ -117,6 +144,7 @@ static void atomic_open_never_reuses_an_existing_temporary(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(big_arrays_are_zeroed_and_released),
         cmocka_unit_test(image_size_overflow_is_refused),
         cmocka_unit_test(sweep_image_past_the_exr_limit_is_refused),
         cmocka_unit_test(long_lists_are_shortened),
