@@ -165,7 +165,8 @@ int sc_batch_run(const char *kernel, const char *tier, const sc_batch_args *a);
 /* Compiles scene for tier (accurate, bits12) on isa (else the best supported set below
  * it that has the tier): every per-light and per-BRDF uniform in float, computed once; the
  * kernel and its variant resolved once — straight-line code for one to four lights that are all
- * directional or all point lights with inverse-square falloff (with lambert, blinn-phong or the
+ * directional, all point or all spot lights, these two with inverse-square falloff (with
+ * lambert, blinn-phong or the
  * GGX of cook-torrance walter/smith-correlated/schlick with a grey F0), a loop over the lights
  * otherwise. NULL with the reason in why when the kernels do not cover the scene,
  * naming the model, light or form:

@@ -56,7 +56,9 @@ typedef struct {
 
 /* Allocates a zeroed image; 0, or -1 (width or height < 1, n_channels not in
  * 1..SC_IMAGE_MAX_CHANNELS, a NULL, empty or repeated name, size overflow, out of memory).
- * On failure *img is left zeroed (sc_image_free is safe). */
+ * On failure *img is left zeroed (sc_image_free is safe). The names and data belong to the
+ * library: released by sc_image_free only (data is not a malloc block: never free() or
+ * realloc() it, nor give sc_image_free an image whose arrays came from elsewhere). */
 int sc_image_init(sc_image *img, int width, int height, int n_channels, const char *const *names);
 void sc_image_free(sc_image *img);
 

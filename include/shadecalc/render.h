@@ -79,7 +79,9 @@ typedef struct {
  * 64 MiB that the kernel zeroes page by page). */
 enum { SC_FRAMEBUFFER_DEPTH = 1, SC_FRAMEBUFFER_NORMAL = 2, SC_FRAMEBUFFER_ALL = 3 };
 
-/* Zeroed RGBA plus the planes in the mask `planes`; sc_framebuffer_init: every plane.
+/* Zeroed RGBA plus the planes in the mask `planes`; sc_framebuffer_init: every plane. The
+ * arrays belong to the library, as an sc_image's data (image.h): released by
+ * sc_framebuffer_free (or taken by sc_render_image_take) only.
  * 0, or -1 (size outside 1..SC_RENDER_MAX_SIDE or above SC_RENDER_MAX_PIXELS, planes outside
  * SC_FRAMEBUFFER_ALL, no memory). */
 int sc_framebuffer_init_planes(sc_framebuffer *fb, int width, int height, int planes);

@@ -114,8 +114,9 @@ int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *
     return 0;
 }
 
-/* Both arrays come from sc_big_calloc (util/bigalloc.h), so sc_image_free releases fb's; the
- * image's own array was never touched, so dropping it costs no page of memory. */
+/* Both arrays come from sc_big_calloc (util/bigalloc.h), so sc_image_free releases fb's. The
+ * image's own array is dropped untouched: a mapping made and unmade, none of its pages
+ * zeroed. */
 int sc_render_image_take(sc_framebuffer *fb, int depth, int normals, sc_image *out)
 {
     if (depth || normals || !fb->rgba)

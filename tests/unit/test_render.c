@@ -248,11 +248,12 @@ static void threads_give_the_same_image(void **state)
 
 /* A framebuffer without depth or normals renders the same colours as one with every plane, and
  * sc_render_image_take hands its RGBA array to the image (no copy) with the same pixels as
- * sc_render_image; planes it lacks cannot be asked of it. */
+ * sc_render_image; planes it lacks cannot be asked of it. S² RGBA floats are 2.4 MiB: a
+ * mapping (util/bigalloc.h), as a full-size render's. */
 static void colour_only_framebuffer_renders_and_moves(void **state)
 {
     (void)state;
-    enum { S = 70 };
+    enum { S = 400 };
     sc_surface *s = sphere();
     sc_mesh m;
     scene_box b;
