@@ -74,10 +74,10 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
     /* a light's direction and factor, by kind (light_dir): directional none; point p − pos (3),
      * r² (3), 1/r² (accurate max, min and rcp; fast tiers the square of l's 1/|d| and a min:
      * 2), l (overflow compare + unit), the r = 0 lanes (a compare; their selects in a branch
-     * taken by rare vectors), w = n·l falloff (1); a spot (the bench's: OpenGL, exponent 2) also −l·axis (4), the cone test (1), the
-     * max of lobe_pow, its integer power (accurate in double: 2 halves converted and back,
-     * extract, insert, a product each: 8; fast in float: 1 product), the cone's select and the
-     * product with the falloff (2) */
+     * taken by rare vectors), w = n·l falloff (1); a spot (the bench's: OpenGL, exponent 2)
+     * also −l·axis (4), the cone test (1), the max of lobe_pow, its integer power (accurate in
+     * double: 2 halves converted and back, extract, insert, a product each: 8; fast in float: 1
+     * product), the cone's select and the product with the falloff (2) */
     double point = 11 + t.unit + (fast ? 0 : t.rcp), spot = point + 8 + (fast ? 1 : 8);
     /* the lobe (own_specular; lobe factor and colours folded into the uniforms): h = l + v (3),
      * h·h (3), max (1); then Blinn-Phong n·h = (n·l + n·v) rsqrt (add, mul, max: 3 + rsqrt_n),

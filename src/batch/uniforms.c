@@ -409,9 +409,9 @@ static int variant_of(const sc_shade_uniforms *u)
         return 0;
     const sc_light_uniforms *first = &u->lights[0];
     int inverse_square = first->atten == SC_ATTEN_INVERSE_SQUARE;
-    int shape = first->kind == SC_LIGHT_DIRECTIONAL               ? 0
-                : first->kind == SC_LIGHT_POINT && inverse_square ? 1
-                : first->kind == SC_LIGHT_SPOT && inverse_square  ? 2
+    int shape = first->kind == SC_LIGHT_DIRECTIONAL               ? SC_SHAPE_DIRECTIONAL
+                : first->kind == SC_LIGHT_POINT && inverse_square ? SC_SHAPE_POINT
+                : first->kind == SC_LIGHT_SPOT && inverse_square  ? SC_SHAPE_SPOT
                                                                   : -1;
     for (int k = 1; k < u->n_lights && shape >= 0; k++)
         if (u->lights[k].kind != first->kind || u->lights[k].atten != first->atten)

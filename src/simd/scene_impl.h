@@ -360,16 +360,16 @@ static SC_INLINE void shade_run(const sc_batch_args *a, lane_n_fn lane, int widt
 }
 
 /* The fixed shapes of src/simd/uniforms.h's variants, by index. */
-enum { SHAPE_SPOT = 2 };
-static const light_shape fixed_shapes[] = {{SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE},
-                                           {SC_LIGHT_POINT, SC_ATTEN_INVERSE_SQUARE},
-                                           {SC_LIGHT_SPOT, SC_ATTEN_INVERSE_SQUARE}};
+static const light_shape fixed_shapes[SC_SHAPES] = {
+    [SC_SHAPE_DIRECTIONAL] = {SC_LIGHT_DIRECTIONAL, SC_ATTEN_NONE},
+    [SC_SHAPE_POINT] = {SC_LIGHT_POINT, SC_ATTEN_INVERSE_SQUARE},
+    [SC_SHAPE_SPOT] = {SC_LIGHT_SPOT, SC_ATTEN_INVERSE_SQUARE}};
 
 /* Vectors a step of the fixed shape si: spot lights one (shade_tier), the others two
  * (shade_pair). Spot pairs ran 1-3% faster than one vector a step (bench shade, blinn-phong 1s)
  * and took the shading kernels 23% longer to compile: the spot factor's cone kinds and powers
  * are much code to inline twice per light. */
-static SC_INLINE int fixed_width(int si) { return si == SHAPE_SPOT ? 1 : 2; }
+static SC_INLINE int fixed_width(int si) { return si == SC_SHAPE_SPOT ? 1 : 2; }
 
 static SC_INLINE void shade_fixed(int tier, sc_lobe lobe, int si, int count, const float *const *in,
                                   float *const *out, size_t i, const shade_vecs *c)
@@ -380,7 +380,9 @@ static SC_INLINE void shade_fixed(int tier, sc_lobe lobe, int si, int count, con
         shade_pair(tier, lobe, fixed_shapes[si], count, in, out, i, c);
 }
 
-/* A loop of the generic lane, and one of a fixed shape: count lights of shape index `si`. */
+/* A loop of the generic lane, and one of a fixed shape: count lights of shape index `si`, a
+ * number (the functions' names are pasted from it): 0, 1, 2 are SC_SHAPE_DIRECTIONAL, _POINT
+ * and _SPOT. */
 #define SHADE_LANE(name, tier, lobe)                                                               \
     static SC_INLINE void name##_lane(const float *const *in, float *const *out, size_t i,         \
                                       const void *c)                                               \

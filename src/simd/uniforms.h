@@ -94,8 +94,9 @@ typedef struct {
 /* The shading kernel's straight-line variants: 1..SC_SHADE_FIXED_MAX lights, all directional,
  * all point or all spot lights (of any spot kinds), these two with inverse-square falloff,
  * with the kernel's own lobes. Variant 0 is the generic loop; variant 1 + 4 s + (count − 1)
- * is count lights of shape s (0 directional, 1 point, 2 spot). */
-enum { SC_SHADE_FIXED_MAX = 4, SC_SHADE_VARIANTS = 1 + 3 * SC_SHADE_FIXED_MAX };
+ * is count lights of shape s. */
+enum { SC_SHAPE_DIRECTIONAL, SC_SHAPE_POINT, SC_SHAPE_SPOT, SC_SHAPES };
+enum { SC_SHADE_FIXED_MAX = 4, SC_SHADE_VARIANTS = 1 + SC_SHAPES * SC_SHADE_FIXED_MAX };
 
 typedef struct {
     sc_light_uniforms lights[SC_BATCH_MAX_LIGHTS];
