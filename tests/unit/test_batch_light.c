@@ -914,10 +914,11 @@ static void plans_at_the_terminator_are_finite(void **state)
     plan_arrays_free(&a);
 }
 
-/* Points at the extremes of a point light's distance, every tier on every instruction set
- * against sc_shade in double: at the light (r = 0: l = n), inside the clamp of 1/r² (r² <
+/* Points at the extremes of a point or spot light's distance, every tier on every instruction
+ * set against sc_shade in double: at the light (r = 0: l = n), inside the clamp of 1/r² (r² <
  * 10^-4), r² next to FLT_MAX, and r² overflowing binary32 (the fast tiers' 1/r² from 1/|d|:
- * src/simd/scene_impl.h, unit_and_inverse_square), where the light adds about 10^-39. */
+ * src/simd/scene_impl.h, unit_and_inverse_square), where the light adds about 10^-39. The
+ * spots' cones (the three kinds) hold every point, so that their factor is not 0. */
 static void plans_at_point_light_extremes(void **state)
 {
     (void)state;
@@ -928,36 +929,42 @@ static void plans_at_point_light_extremes(void **state)
     enum { N_OFFSETS = sizeof offsets / sizeof offsets[0] };
     static const char *const models[] = {"lambert", "blinn-phong m=32 spec=0.4",
                                          "cook-torrance alpha=0.3 f0=0.04"};
+    static const char *const lights[] = {
+        "point pos=2,-3,3 I=20", "spot pos=2,-3,3 dir=0,0,-1 I=20 cutoff=60 exp=3",
+        "spot pos=2,-3,3 dir=0,0,-1 I=20 spot=directx inner=30 outer=70",
+        "spot pos=2,-3,3 dir=0,0,-1 I=20 spot=smoothstep inner=30 outer=70"};
     sc_light light;
     char err[256];
-    assert_int_equal(sc_light_parse("point pos=2,-3,3 I=20", &light, err, sizeof err), 0);
     plan_arrays a;
     plan_arrays_alloc(&a);
     for (size_t i = 0; i < N_PLAN; i++) /* n toward the light, v beside it */
         for (int c = 0; c < 3; c++) {
+            static const double light_pos[3] = {2, -3, 3};
             a.in[c][i] = (float)(c == 2 ? 1.0 : 0.0);
             a.in[3 + c][i] = (float)(c == 0 ? 0.5 : c == 1 ? 0.25 : 1.0);
-            a.in[6 + c][i] = (float)light.pos[c] + offsets[i % N_OFFSETS][c];
+            a.in[6 + c][i] = (float)light_pos[c] + offsets[i % N_OFFSETS][c];
         }
-    for (int m = 0; m < (int)(sizeof models / sizeof models[0]); m++) {
-        sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
-        assert_int_equal(sc_model_parse(models[m], &scene.model, err, sizeof err), 0);
-        for (int isa = 0; isa < SC_ISA_COUNT; isa++)
-            for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
-                sc_batch_plan *plan = shade_through_plan(&scene, tiers[t], (sc_isa)isa, &a);
-                double bound = sc_batch_plan_entry(plan)->bound_rel;
-                for (size_t i = 0; i < N_OFFSETS; i++) {
-                    double ref[3];
-                    shade_double(&scene, &a, i, ref);
-                    for (int c = 0; c < 3; c++)
-                        if (!(fabs(a.out[c][i] - ref[c]) <= 2.0 * bound * fabs(ref[c]) + 1e-30))
-                            fail_msg("%s %s %s offset %zu channel %d: %.9g, sc_shade %.9g",
-                                     models[m], tiers[t], sc_isa_name((sc_isa)isa), i, c,
-                                     (double)a.out[c][i], ref[c]);
+    for (int k = 0; k < (int)(sizeof lights / sizeof lights[0]); k++)
+        for (int m = 0; m < (int)(sizeof models / sizeof models[0]); m++) {
+            assert_int_equal(sc_light_parse(lights[k], &light, err, sizeof err), 0);
+            sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
+            assert_int_equal(sc_model_parse(models[m], &scene.model, err, sizeof err), 0);
+            for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+                for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
+                    sc_batch_plan *plan = shade_through_plan(&scene, tiers[t], (sc_isa)isa, &a);
+                    double bound = sc_batch_plan_entry(plan)->bound_rel;
+                    for (size_t i = 0; i < N_OFFSETS; i++) {
+                        double ref[3];
+                        shade_double(&scene, &a, i, ref);
+                        for (int c = 0; c < 3; c++)
+                            if (!(fabs(a.out[c][i] - ref[c]) <= 2.0 * bound * fabs(ref[c]) + 1e-30))
+                                fail_msg("%s, %s %s %s offset %zu channel %d: %.9g, sc_shade %.9g",
+                                         lights[k], models[m], tiers[t], sc_isa_name((sc_isa)isa),
+                                         i, c, (double)a.out[c][i], ref[c]);
+                    }
+                    sc_batch_plan_free(plan);
                 }
-                sc_batch_plan_free(plan);
-            }
-    }
+        }
     plan_arrays_free(&a);
 }
 
