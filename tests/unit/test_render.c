@@ -214,6 +214,15 @@ static void tessellate(const sc_surface *s, int n, sc_mesh *m)
 
 static const sc_camera side_view = {{0.5, -3.2, 1.1}, {0, 0, 0}, {0, 0, 1}, 40};
 
+/* The unit sphere in about `triangles` triangles, under a point light, Blinn-Phong m = 40. */
+static sc_surface *lit_sphere(int triangles, sc_mesh *m, scene_box *b)
+{
+    sc_surface *s = sphere();
+    tessellate(s, triangles, m);
+    make_scene(b, "point pos=2,-3,3 I=20", "blinn-phong m=40");
+    return s;
+}
+
 /* Tiles go to threads in any order; each pixel is computed the same: identical images. Each
  * tile clears its own pixels: `many` starts full of garbage (as a previous render would leave
  * it) and S is not a multiple of the tile size, yet every pixel, the empty corners included,
@@ -222,11 +231,9 @@ static void threads_give_the_same_image(void **state)
 {
     (void)state;
     enum { S = 150 };
-    sc_surface *s = sphere();
     sc_mesh m;
     scene_box b;
-    tessellate(s, 2000, &m);
-    make_scene(&b, "point pos=2,-3,3 I=20", "blinn-phong m=40");
+    sc_surface *s = lit_sphere(2000, &m, &b);
     sc_framebuffer one, many;
     assert_int_equal(sc_framebuffer_init(&one, S, S), 0);
     assert_int_equal(sc_framebuffer_init(&many, S, S), 0);
@@ -254,11 +261,9 @@ static void colour_only_framebuffer_renders_and_moves(void **state)
 {
     (void)state;
     enum { S = 400 };
-    sc_surface *s = sphere();
     sc_mesh m;
     scene_box b;
-    tessellate(s, 800, &m);
-    make_scene(&b, "point pos=2,-3,3 I=20", "blinn-phong m=40");
+    sc_surface *s = lit_sphere(800, &m, &b);
     sc_framebuffer all, colour, bad;
     assert_int_equal(sc_framebuffer_init(&all, S, S), 0);
     assert_int_equal(sc_framebuffer_init_planes(&colour, S, S, 0), 0);
