@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "image/adopt.h"
 #include "util/bigalloc.h"
 
 static int names_are_valid(int n, const char *const *names)
@@ -30,7 +31,9 @@ static int copy_names(sc_image *img, int n, const char *const *names)
     return 0;
 }
 
-int sc_image_init(sc_image *img, int width, int height, int n_channels, const char *const *names)
+/* The image's size and names, and `data` (0: a zeroed array of its own) as its pixels. */
+static int image_with(sc_image *img, int width, int height, int n_channels,
+                      const char *const *names, float *data)
 {
     memset(img, 0, sizeof *img);
     if (width < 1 || height < 1 || n_channels < 1 || n_channels > SC_IMAGE_MAX_CHANNELS || !names ||
@@ -39,15 +42,27 @@ int sc_image_init(sc_image *img, int width, int height, int n_channels, const ch
     if ((size_t)height > SIZE_MAX / sizeof(float) / (size_t)n_channels / (size_t)width)
         return -1;
     size_t pixels = (size_t)width * (size_t)height;
-    img->width = width;
-    img->height = height;
-    img->n_channels = n_channels;
-    img->data = sc_big_calloc(pixels * (size_t)n_channels, sizeof(float));
-    if (!img->data || copy_names(img, n_channels, names) != 0) {
+    if (copy_names(img, n_channels, names) != 0 ||
+        !(data = data ? data : sc_big_calloc(pixels * (size_t)n_channels, sizeof(float)))) {
         sc_image_free(img);
         return -1;
     }
+    img->width = width;
+    img->height = height;
+    img->n_channels = n_channels;
+    img->data = data;
     return 0;
+}
+
+int sc_image_init(sc_image *img, int width, int height, int n_channels, const char *const *names)
+{
+    return image_with(img, width, height, n_channels, names, NULL);
+}
+
+int image_adopt(sc_image *img, int width, int height, int n_channels, const char *const *names,
+                float *data)
+{
+    return data ? image_with(img, width, height, n_channels, names, data) : -1;
 }
 
 void sc_image_free(sc_image *img)

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "image/adopt.h"
 #include "shadecalc/render.h"
 #include "util/bigalloc.h"
 
@@ -78,8 +79,10 @@ void sc_render_compare(const sc_framebuffer *img, const sc_framebuffer *ref, flo
     out->pixels = pixels;
 }
 
-/* An image of fb's size with the channels R, G, B, A, [Z], [N.X, N.Y, N.Z]; 0, or -1. */
-static int image_for(const sc_framebuffer *fb, int depth, int normals, sc_image *out)
+/* An image of fb's size with the channels R, G, B, A, [Z], [N.X, N.Y, N.Z], its pixels a new
+ * array, or `adopted` (image/adopt.h); 0, or -1. */
+static int image_for(const sc_framebuffer *fb, int depth, int normals, float *adopted,
+                     sc_image *out)
 {
     const char *names[8] = {"R", "G", "B", "A"};
     int n = 4;
@@ -94,12 +97,13 @@ static int image_for(const sc_framebuffer *fb, int depth, int normals, sc_image 
         memset(out, 0, sizeof *out);
         return -1;
     }
-    return sc_image_init(out, fb->width, fb->height, n, names);
+    return adopted ? image_adopt(out, fb->width, fb->height, n, names, adopted)
+                   : sc_image_init(out, fb->width, fb->height, n, names);
 }
 
 int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *out)
 {
-    if (image_for(fb, depth, normals, out) < 0)
+    if (image_for(fb, depth, normals, NULL, out) < 0)
         return -1;
     int n = out->n_channels;
     size_t pixels = (size_t)fb->width * (size_t)fb->height;
@@ -114,17 +118,13 @@ int sc_render_image(const sc_framebuffer *fb, int depth, int normals, sc_image *
     return 0;
 }
 
-/* Both arrays come from sc_big_calloc (util/bigalloc.h), so sc_image_free releases fb's. The
- * image's own array is dropped untouched: a mapping made and unmade, none of its pages
- * zeroed. */
+/* fb's RGBA array comes from sc_big_calloc (util/bigalloc.h), as image/adopt.h asks. */
 int sc_render_image_take(sc_framebuffer *fb, int depth, int normals, sc_image *out)
 {
     if (depth || normals || !fb->rgba)
         return sc_render_image(fb, depth, normals, out);
-    if (image_for(fb, 0, 0, out) < 0)
+    if (image_for(fb, 0, 0, fb->rgba, out) < 0)
         return -1;
-    sc_big_free(out->data);
-    out->data = fb->rgba;
     fb->rgba = NULL;
     return 0;
 }

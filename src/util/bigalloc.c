@@ -59,9 +59,8 @@ static void *map_huge(size_t bytes)
 {
     long page_size = sysconf(_SC_PAGESIZE);
     size_t page = (size_t)page_size, span = round_up(bytes, HUGE_PAGE);
-    if (page_size < HEADER || page > HUGE_PAGE || span < bytes ||
-        span > SIZE_MAX - (size_t)HUGE_PAGE)
-        return NULL;
+    if (page_size < HEADER || page > HUGE_PAGE || span > SIZE_MAX - (size_t)HUGE_PAGE)
+        return NULL; /* span itself cannot wrap: sc_big_calloc refuses bytes that would */
     size_t len = span + HUGE_PAGE; /* the array starts at most a huge page past the base */
     char *base = mmap(NULL, len, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (base == MAP_FAILED)
