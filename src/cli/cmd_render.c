@@ -510,19 +510,17 @@ static int init_framebuffer(const render_options *o, sc_framebuffer *fb)
     return sc_framebuffer_init_planes(fb, o->width, o->height, planes);
 }
 
-/* Writes fb's image; take: the image may take fb's RGBA array (sc_render_image_take). */
-static int write_image(sc_framebuffer *fb, int take, const render_options *o, const char *path,
+/* Writes a framebuffer's image, made (sc_render_image or _take) with the status `made`, and
+ * releases it. */
+static int write_image(int made, sc_image *img, const render_options *o, const char *path,
                        const char *mode)
 {
-    sc_image img;
-    int bad = take ? sc_render_image_take(fb, o->depth, o->normals, &img)
-                   : sc_render_image(fb, o->depth, o->normals, &img);
-    if (bad) {
+    if (made < 0) {
         sc_error("render: out of memory");
         return SC_EXIT_RUNTIME;
     }
-    int status = write_exr(o, &img, path, "shadecalc:shading", mode);
-    sc_image_free(&img);
+    int status = write_exr(o, img, path, "shadecalc:shading", mode);
+    sc_image_free(img);
     return status;
 }
 
@@ -596,7 +594,9 @@ static int render_one(const render_options *o, const shade_setup *s, const sc_sc
         status = brdf_file_status(&scene->model, "render");
     if (status == SC_EXIT_OK) {
         warn_overflow(&fb, o);
-        status = write_image(&fb, 1, o, o->output, sc_shading_name(o->shading));
+        sc_image img; /* the colours move into it: no copy */
+        status = write_image(sc_render_image_take(&fb, o->depth, o->normals, &img), &img, o,
+                             o->output, sc_shading_name(o->shading));
     }
     sc_framebuffer_free(&fb);
     sc_mesh_free(&mesh);
@@ -658,13 +658,15 @@ static int write_error_map(const render_options *o, const sc_framebuffer *ref, c
 }
 
 /* Writes step k's image (and its error map against ref unless it is the reference). */
-static int write_step(const render_options *o, int k, sc_framebuffer *fb, const sc_framebuffer *ref,
-                      float *map, compare_row *row)
+static int write_step(const render_options *o, int k, const sc_framebuffer *fb,
+                      const sc_framebuffer *ref, float *map, compare_row *row)
 {
     char name[64], path[4096];
     step_name(k, name, sizeof name);
     snprintf(path, sizeof path, "%s/render-%s.exr", o->output_dir, name);
-    int status = write_image(fb, 0, o, path, sc_shading_name(plan[k].shading));
+    sc_image img;
+    int status = write_image(sc_render_image(fb, o->depth, o->normals, &img), &img, o, path,
+                             sc_shading_name(plan[k].shading));
     sc_render_compare(fb, ref, map, &row->error);
     if (status == SC_EXIT_OK && k != REFERENCE) {
         snprintf(path, sizeof path, "%s/error-%s.exr", o->output_dir, name);
