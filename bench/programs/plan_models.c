@@ -1,17 +1,17 @@
 /* The shading kernel through a plan for each BRDF model a scene can name, one directional light,
  * on every tier and instruction set of this CPU: ns per element (the best of R calls on 4096
- * random points, cos θ_v >= 0.1). `shadecalc bench shade` times the scenes its plain-loop peers
+ * random points drawn as the bench's). `shadecalc bench shade` times the scenes its plain-loop peers
  * also compute (lambert, Blinn-Phong, GGX); this times the models beyond them.
  *
  *   build/bench/plan_models [R]      (R in 1..100000, default 300; CSV on stdout) */
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-#include "shadecalc/accuracy.h"
 #include "shadecalc/batch.h"
 #include "shadecalc/scene.h"
 
@@ -36,31 +36,21 @@ static double now_ns(void)
     return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
 }
 
-/* uniform in [-1, 1) */
-static double signed_unit(void)
+/* 4096 elements of the shading kernel's inputs as `shadecalc bench shade` draws them
+ * (sc_batch_sample) */
+static int random_points(float in[9][N])
 {
-    static uint64_t rng = 0x9E3779B97F4A7C15ULL;
-    return 2.0 * ((double)(sc_accuracy_random(&rng) >> 11) * 0x1p-53) - 1.0;
-}
-
-/* unit n and a viewer direction v (not unit) at cos θ_v >= 0.1; p near the origin */
-static void random_points(float in[9][N])
-{
+    const sc_batch_entry *e = sc_batch_find("shade", "accurate", SC_ISA_SCALAR);
+    if (!e)
+        return -1;
+    uint64_t rng = 0x9E3779B97F4A7C15ULL;
     for (int i = 0; i < N; i++) {
-        double n[3], v[3], nn, vv, nv;
-        do {
-            nn = vv = nv = 0.0;
-            for (int c = 0; c < 3; c++) {
-                n[c] = signed_unit(), v[c] = signed_unit();
-                nn += n[c] * n[c], vv += v[c] * v[c], nv += n[c] * v[c];
-            }
-        } while (nn > 1.0 || vv > 1.0 || nv < 0.1 * sqrt(nn * vv));
-        for (int c = 0; c < 3; c++) {
-            in[c][i] = (float)(n[c] / sqrt(nn));
-            in[3 + c][i] = (float)v[c];
-            in[6 + c][i] = (float)(0.5 * signed_unit());
-        }
+        float element[9];
+        sc_batch_sample(e, &rng, element);
+        for (int j = 0; j < 9; j++)
+            in[j][i] = element[j];
     }
+    return 0;
 }
 
 /* the best of `repeat` calls, ns per element */
@@ -91,9 +81,12 @@ int main(int argc, char **argv)
         return 2;
     }
     static float in[9][N], out[3][N];
-    random_points(in);
     sc_light light;
     char err[256];
+    if (random_points(in) != 0) {
+        fprintf(stderr, "plan_models: no shade kernel in the table\n");
+        return 1;
+    }
     if (sc_light_parse("directional dir=-1,-1,2 E=0.7", &light, err, sizeof err) != 0) {
         fprintf(stderr, "plan_models: %s\n", err);
         return 1;
