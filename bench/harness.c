@@ -85,7 +85,7 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
      * squarings of pow_int, or in the fast tiers for an even integer m (the plan's lobe_m)
      * (n·h)² = (n·l + n·v)²/h·h (add, mul, rcp, mul, max: 4 + rcp) and the squarings of pow_int
      * to m/2; GGX without the max: d |h|² (add, mul, fma), g_v and g_l (each mul, fma, √, mul),
-     * |h|⁴/((d |h|²)² (g_v + g_l)) (mul, add, mul, rcp, mul, mul), (v·h)²:
+     * |h|⁴/((d |h|²)² (g_v + g_l)) (mul, mul, add, mul, division), (v·h)²:
      * accurate from v·l (3: fma, max), then b = 1 − √(v·h)² (√, sub); fast b = 1 − √(|h|²)/2
      * (√, fma), b⁵ and F (mul, mul, mul, fma), D V F (mul); both then the lit select and product
      * (2) and acc += (3 FMA) */
@@ -96,7 +96,7 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
     else if (b->kind == SC_BRDF_BLINN_PHONG)
         lobe = 7 + 3 + t.rsqrt_n + (fast ? 0 : 2) + pow_int_muls(b->m) + 5;
     else if (b->kind == SC_BRDF_COOK_TORRANCE)
-        lobe = 6 + 3 + 2 * 4 + 5 + t.rcp + (fast ? 0 : 3 + 2) + 2 + 4 + 1 + 5;
+        lobe = 6 + 3 + 2 * 4 + 5 + (fast ? 0 : 3 + 2) + 2 + 4 + 1 + 5;
     /* each light: n·l (3), the lit mask (min, compare), the weight select (1), acc += w E
      * c_diff/π (3 FMA), its colours made once per call (shade_vecs_make), in the generic loop
      * too; a directional light in the fast tiers takes n·l of the loaded vectors, times the
