@@ -83,7 +83,7 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
      * h·h (3), max (1); then Blinn-Phong n·h = (n·l + n·v) rsqrt (add, mul, max: 3 + rsqrt_n),
      * in the accurate tier the cutoff (compare, select; the fast tiers' is the max), and the
      * squarings of pow_int, or in the fast tiers for an even integer m (the plan's lobe_m)
-     * (n·h)² = (n·l + n·v)²/h·h (add, mul, rcp, mul, max: 4 + rcp) and the squarings of pow_int
+     * (n·h)² = (n·l + n·v)²/h·h (add, mul, division, max: 4) and the squarings of pow_int
      * to m/2; GGX without the max: d |h|² (add, mul, fma), g_v and g_l (each mul, fma, √, mul),
      * |h|⁴/((d |h|²)² (g_v + g_l)) (mul, mul, add, mul, division), (v·h)²:
      * accurate from v·l (3: fma, max), then b = 1 − √(v·h)² (√, sub); fast b = 1 − √(|h|²)/2
@@ -92,7 +92,7 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
     double lobe = 0;
     unsigned lobe_m = sc_batch_plan_uniforms(plan)->lobe_m;
     if (b->kind == SC_BRDF_BLINN_PHONG && fast && lobe_m % 2 == 0 && lobe_m)
-        lobe = 7 + 4 + t.rcp + pow_int_muls(lobe_m / 2) + 5;
+        lobe = 7 + 4 + pow_int_muls(lobe_m / 2) + 5;
     else if (b->kind == SC_BRDF_BLINN_PHONG)
         lobe = 7 + 3 + t.rsqrt_n + (fast ? 0 : 2) + pow_int_muls(b->m) + 5;
     else if (b->kind == SC_BRDF_COOK_TORRANCE)
