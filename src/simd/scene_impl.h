@@ -298,14 +298,15 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
         v3 e = v3_scale(lv->color, w);
         return (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
     }
-    /* w (E ⊙ c_diff/π) + w f_s (E ⊙ c_spec) */
-    acc = (v3){vf_fma(w, lv->diff.x, acc.x), vf_fma(w, lv->diff.y, acc.y),
-               vf_fma(w, lv->diff.z, acc.z)};
-    if (lobe == SC_LOBE_NONE)
-        return acc;
-    vf ws = vf_keep(lit, vf_mul(w, own_specular(tier, lobe, c, n, v, l, nl, nv, vl)));
-    return (v3){vf_fma(ws, lv->spec.x, acc.x), vf_fma(ws, lv->spec.y, acc.y),
-                vf_fma(ws, lv->spec.z, acc.z)};
+    if (lobe == SC_LOBE_NONE) /* w (E ⊙ c_diff/π) */
+        return (v3){vf_fma(w, lv->diff.x, acc.x), vf_fma(w, lv->diff.y, acc.y),
+                    vf_fma(w, lv->diff.z, acc.z)};
+    /* w (E ⊙ c_diff/π + f_s E ⊙ c_spec): six FMAs, where w E ⊙ c_diff/π + (w f_s) E ⊙ c_spec
+     * took a product more */
+    vf fs = vf_keep(lit, own_specular(tier, lobe, c, n, v, l, nl, nv, vl));
+    v3 f = {vf_fma(fs, lv->spec.x, lv->diff.x), vf_fma(fs, lv->spec.y, lv->diff.y),
+            vf_fma(fs, lv->spec.z, lv->diff.z)};
+    return (v3){vf_fma(w, f.x, acc.x), vf_fma(w, f.y, acc.y), vf_fma(w, f.z, acc.z)};
 }
 
 /* The shading equation for one vector of elements: count < 0, the generic loop over all the
