@@ -1,6 +1,7 @@
 /* The machine's description and the two measured bounds of the roofline: memory bandwidth
- * (a stream loop over arrays far larger than the last-level cache) and floating-point
- * throughput (bench/peak_avx2.c; without AVX2, independent scalar chains). An instruction set
+ * (a stream loop over two arrays far larger than the last-level cache; each streaming row has
+ * its own, over as many arrays as it moves: bench/harness.c) and floating-point throughput
+ * (bench/peak_avx2.c; without AVX2, independent scalar chains). An instruction set
  * of width w gets w/8 of the 8-lane peak: vector instructions issue at the rate of scalar ones
  * on the x86 cores we target. */
 #include <stdio.h>
@@ -33,8 +34,8 @@ static void cpu_name(char *out, size_t size)
 /* A stream loop: the inversesqrt bits11 batch kernel (one rsqrt per vector: the sqrt
  * instruction would be the bottleneck) on the best instruction set over 2 × 64 MiB, twice the
  * last-level cache of the machines we target: bytes read plus written per ns, best of 3 — the
- * memory side of the roofline, measured the way the kernels move their data (at this size,
- * non-temporal stores). */
+ * machine's figure in the report's header, and the memory side of the roofline where the
+ * rows' own stream loop cannot run (no AVX2). */
 static double stream_bandwidth(void)
 {
     enum { N = 16 << 20 };

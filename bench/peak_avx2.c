@@ -2,7 +2,8 @@
  * additions, 7 of each (as many as the 16 ymm registers hold beside the two constants; about
  * latency times issue rate: 4 cycles × 2 FMA pipes, 3 cycles × 2 add pipes on Zen 3), so that
  * the loop runs near the throughput of all the FP pipes a kernel's mix of multiplies and
- * additions can use. Compiled with -mavx2 -mfma (Makefile). */
+ * additions can use; and the memory side, a stream loop over as many arrays as a kernel reads
+ * and writes. Compiled with -mavx2 -mfma (Makefile). */
 #include "bench/bench.h"
 #include "bench/timer.h"
 
@@ -48,6 +49,29 @@ double bench_peak_avx2(void)
     }
     return best;
 }
+
+double bench_stream_pass_avx2(float *const *arrays, int k, int m, size_t n)
+{
+    if (!__builtin_cpu_supports("avx2"))
+        return 0.0;
+    double t0 = bench_now_ns();
+    for (size_t i = 0; i + 8 <= n; i += 8) {
+        __m256 sum = _mm256_load_ps(arrays[0] + i);
+        for (int j = 1; j < k; j++)
+            sum = _mm256_add_ps(sum, _mm256_load_ps(arrays[j] + i));
+        for (int j = 0; j < m; j++)
+            _mm256_stream_ps(arrays[k + j] + i, sum);
+    }
+    _mm_sfence();
+    double t = bench_now_ns() - t0;
+    bench_keep(arrays[k][n / 2]);
+    return t;
+}
 #else
 double bench_peak_avx2(void) { return 0.0; }
+double bench_stream_pass_avx2(float *const *arrays, int k, int m, size_t n)
+{
+    (void)arrays, (void)k, (void)m, (void)n;
+    return 0.0;
+}
 #endif
