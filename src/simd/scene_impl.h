@@ -133,7 +133,8 @@ static SC_INLINE vf own_specular(int tier, sc_lobe lobe, const shade_vecs *c, v3
          * holds many times over, and no power is subnormal. An even m raises (n·h)² =
          * (n·(l + v))²/|h|² to m/2: one division (the divider is idle here; a reciprocal and
          * its Newton step took three issue slots of the multiply pipes, and measured 7% slower),
-         * where 1/|h| takes a reciprocal square root, its Newton step and a squaring fewer. */
+         * where n·h from 1/|h| takes a reciprocal square root and its Newton step, and the power
+         * a squaring more. */
         if (m && tier != ACCURATE && m % 2 == 0) {
             vf sum = n_dot_h(tier, n, h, nl, nv);
             vf nh2 = vf_div(vf_mul(sum, sum), hh_min);
@@ -301,12 +302,21 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
     if (lobe == SC_LOBE_NONE) /* w (E ⊙ c_diff/π) */
         return (v3){vf_fma(w, lv->diff.x, acc.x), vf_fma(w, lv->diff.y, acc.y),
                     vf_fma(w, lv->diff.z, acc.z)};
-    /* w (E ⊙ c_diff/π + f_s E ⊙ c_spec): six FMAs, where w E ⊙ c_diff/π + (w f_s) E ⊙ c_spec
-     * took a product more */
     vf fs = vf_keep(lit, own_specular(tier, lobe, c, n, v, l, nl, nv, vl));
-    v3 f = {vf_fma(fs, lv->spec.x, lv->diff.x), vf_fma(fs, lv->spec.y, lv->diff.y),
-            vf_fma(fs, lv->spec.z, lv->diff.z)};
-    return (v3){vf_fma(w, f.x, acc.x), vf_fma(w, f.y, acc.y), vf_fma(w, f.z, acc.z)};
+    if (lobe == SC_LOBE_BLINN) {
+        /* w (E ⊙ c_diff/π + f_s E ⊙ c_spec): six FMAs, a product fewer than the form below,
+         * for a lobe at most about 1 */
+        v3 f = {vf_fma(fs, lv->spec.x, lv->diff.x), vf_fma(fs, lv->spec.y, lv->diff.y),
+                vf_fma(fs, lv->spec.z, lv->diff.z)};
+        return (v3){vf_fma(w, f.x, acc.x), vf_fma(w, f.y, acc.y), vf_fma(w, f.z, acc.z)};
+    }
+    /* w E ⊙ c_diff/π + (w f_s) E ⊙ c_spec: GGX's V grows as 1/(n·l + n·v) at grazing, where
+     * f_s E ⊙ c_spec alone may exceed FLT_MAX, and w f_s = n·l f_s, n·l/(g_v + g_l) <= 1/α,
+     * does not */
+    vf ws = vf_mul(w, fs);
+    return (v3){vf_fma(ws, lv->spec.x, vf_fma(w, lv->diff.x, acc.x)),
+                vf_fma(ws, lv->spec.y, vf_fma(w, lv->diff.y, acc.y)),
+                vf_fma(ws, lv->spec.z, vf_fma(w, lv->diff.z, acc.z))};
 }
 
 /* The shading equation for one vector of elements: count < 0, the generic loop over all the

@@ -914,6 +914,45 @@ static void plans_at_the_terminator_are_finite(void **state)
     plan_arrays_free(&a);
 }
 
+/* GGX lit at grazing from both sides: n·l and n·v between 2^-123 and 2^-100, a bright light
+ * (E = 10^5). V = 1/(2 (g_v + g_l)) grows as 1/(n·l + n·v), up to about 10^37 here, and the
+ * specular term E ⊙ c_spec f_s alone exceeds FLT_MAX: the kernel forms w f_s = n·l f_s first
+ * (src/simd/scene_impl.h, light_term), where n·l/(g_v + g_l) <= 1/α. Every output finite, in
+ * every tier and instruction set. */
+static void ggx_grazing_from_both_sides_is_finite(void **state)
+{
+    (void)state;
+    sc_light light;
+    char err[256];
+    assert_int_equal(sc_light_parse("directional dir=1,0,1e-37 E=1e5", &light, err, sizeof err), 0);
+    plan_arrays a;
+    plan_arrays_alloc(&a);
+    for (size_t i = 0; i < N_PLAN; i++) {
+        double phi = 1.5 * (double)i / N_PLAN; /* v·l >= 0: |l + v|² >= 2 */
+        float grazing = ldexpf(1.0f, -123 + (int)(i % 24));
+        float n[3] = {0.0f, 0.0f, 1.0f}, v[3] = {(float)cos(phi), (float)sin(phi), grazing};
+        for (int c = 0; c < 3; c++) {
+            a.in[c][i] = n[c];
+            a.in[3 + c][i] = v[c];
+            a.in[6 + c][i] = 0.0f;
+        }
+    }
+    sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
+    assert_int_equal(
+        sc_model_parse("cook-torrance alpha=0.3 f0=0.04", &scene.model, err, sizeof err), 0);
+    for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+        for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
+            sc_batch_plan *plan = shade_through_plan(&scene, tiers[t], (sc_isa)isa, &a);
+            for (size_t i = 0; i < N_PLAN; i++)
+                for (int c = 0; c < 3; c++)
+                    if (!isfinite(a.out[c][i]))
+                        fail_msg("%s %s point %zu (n·v %g): %g", tiers[t], sc_isa_name((sc_isa)isa),
+                                 i, (double)a.in[5][i], (double)a.out[c][i]);
+            sc_batch_plan_free(plan);
+        }
+    plan_arrays_free(&a);
+}
+
 /* Points at the extremes of a point or spot light's distance, every tier on every instruction
  * set against sc_shade in double: at the light (r = 0: l = n), inside the clamp of 1/r² (r² <
  * 10^-4), r² next to FLT_MAX, and r² overflowing binary32 (the fast tiers' 1/r² from 1/|d|:
@@ -1226,6 +1265,7 @@ int main(void)
         cmocka_unit_test(spot_integer_exponents),
         cmocka_unit_test(plans_at_point_light_extremes),
         cmocka_unit_test(plans_at_the_terminator_are_finite),
+        cmocka_unit_test(ggx_grazing_from_both_sides_is_finite),
     };
     return cmocka_run_group_tests_name("batch_light", tests, NULL, NULL);
 }
