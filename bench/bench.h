@@ -52,7 +52,9 @@ int bench_isa_width(sc_isa isa);
 double bench_peak_avx2(void);
 /* One pass of a stream loop over n floats of k input arrays, arrays[0..k), and m output arrays
  * after them, 32-byte aligned: AVX2 loads, the inputs' sum stored with non-temporal stores, as
- * the batch kernels move their data at streaming sizes. Its ns; 0 without AVX2. */
+ * the batch kernels move their data at streaming sizes. Its ns; only where
+ * bench_stream_avx2_supported (1 if the CPU has AVX2). */
+int bench_stream_avx2_supported(void);
 double bench_stream_pass_avx2(float *const *arrays, int k, int m, size_t n);
 
 /* ---- cases: kernel × isa × tier (× scene for shade) × size ---- */

@@ -87,20 +87,21 @@ static double shade_ops(const sc_scene *s, const sc_batch_plan *plan, const char
      * to m/2; GGX without the max: d |h|² (add, mul, fma), g_v and g_l (each mul, fma, √, mul),
      * |h|⁴/((d |h|²)² (g_v + g_l)) (mul, mul, add, mul, division), (v·h)²:
      * accurate from v·l (3: fma, max), then b = 1 − √(v·h)² (√, sub); fast b = 1 − √(|h|²)/2
-     * (√, fma), b⁵ and F (mul, mul, mul, fma), D V F (mul); both then the lit select and product
-     * (2) and acc += (3 FMA) */
+     * (√, fma), b⁵ and F (mul, mul, mul, fma), D V F (mul); then the lit select of f_s and,
+     * Blinn-Phong, f = f_s E ⊙ c_spec + E ⊙ c_diff/π (3 FMA: 4), GGX, w f_s and acc += w f_s E ⊙
+     * c_spec (product, 3 FMA: 5) */
     double lobe = 0;
     unsigned lobe_m = sc_batch_plan_uniforms(plan)->lobe_m;
     if (b->kind == SC_BRDF_BLINN_PHONG && fast && lobe_m % 2 == 0 && lobe_m)
-        lobe = 7 + 4 + pow_int_muls(lobe_m / 2) + 5;
+        lobe = 7 + 4 + pow_int_muls(lobe_m / 2) + 4;
     else if (b->kind == SC_BRDF_BLINN_PHONG)
-        lobe = 7 + 3 + t.rsqrt_n + (fast ? 0 : 2) + pow_int_muls(b->m) + 5;
+        lobe = 7 + 3 + t.rsqrt_n + (fast ? 0 : 2) + pow_int_muls(b->m) + 4;
     else if (b->kind == SC_BRDF_COOK_TORRANCE)
         lobe = 6 + 3 + 2 * 4 + 5 + (fast ? 0 : 3 + 2) + 2 + 4 + 1 + 5;
     /* each light: n·l (3), the lit mask (min, compare), the weight select (1), acc += w E
-     * c_diff/π (3 FMA), its colours made once per call (shade_vecs_make), in the generic loop
-     * too; a directional light in the fast tiers takes n·l of the loaded vectors, times the
-     * inverse length (1 mul) */
+     * c_diff/π (Blinn-Phong: w f; 3 FMA), its colours made once per call (shade_vecs_make), in
+     * the generic loop too; a directional light in the fast tiers takes n·l of the loaded
+     * vectors, times the inverse length (1 mul) */
     for (int k = 0; k < s->n_lights; k++) {
         sc_light_kind kind = s->lights[k].kind;
         ops += 9 + lobe;
@@ -357,11 +358,12 @@ static int sleef_loops_for(const char *kernel, const bench_sleef **loops)
 
 /* ---- one kernel × scene × size ---- */
 
-/* The arrays of the stream loop (bench_stream_pass_avx2): as many as a kernel has, n floats
- * each. */
+/* The arrays of the stream loop (bench_stream_pass_avx2): `count` of them, as many as the
+ * rows have needed so far, n floats each. */
 enum { PROBE_ARRAYS = 12 }; /* shade and brdf: 9 inputs, 3 outputs */
 typedef struct {
     float *arrays[PROBE_ARRAYS];
+    int count;
     size_t n;
 } stream_probe;
 
@@ -402,38 +404,38 @@ static void probe_release(stream_probe *p)
     memset(p, 0, sizeof *p);
 }
 
-/* The probe's arrays for n elements (whole vectors of 8, aligned_alloc's size a multiple of
- * its alignment), written once so that the passes take no page faults; 0, or -1 without the
- * memory. */
-static int probe_arrays(stream_probe *p, size_t n)
+/* At least `count` arrays of n elements in the probe (whole vectors of 8, aligned_alloc's size
+ * a multiple of its alignment), each written once so that the passes take no page faults: 0,
+ * or -1 without the memory. */
+static int probe_arrays(stream_probe *p, int count, size_t n)
 {
     n -= n % 8;
-    if (p->n == n && p->arrays[0])
-        return 0;
-    probe_release(p);
-    for (int j = 0; j < PROBE_ARRAYS; j++) {
-        if (!(p->arrays[j] = aligned_alloc(32, n * sizeof(float)))) {
+    if (p->n != n)
+        probe_release(p);
+    p->n = n;
+    for (; p->count < count; p->count++) {
+        if (!(p->arrays[p->count] = aligned_alloc(32, n * sizeof(float)))) {
             probe_release(p);
             return -1;
         }
         for (size_t i = 0; i < n; i++)
-            p->arrays[j][i] = 1.0f;
+            p->arrays[p->count][i] = 1.0f;
     }
-    p->n = n;
     return 0;
 }
 
 /* The bandwidth a kernel reading k arrays and writing m can reach at n elements, in bytes per
- * ns: a stream loop over as many arrays of that size, best of 3 passes, taken right after the
- * row's timing, as the machine's memory is shared (on this project's VM the same loop read 39
- * GB/s and 27 a few minutes apart). With more arrays the loop moves fewer bytes per ns (one
- * Zen 5 core: 48 GB/s over one input and one output, 39 over six and three, 33 over nine and
+ * ns: a stream loop over as many arrays of that size, best of 3 passes, taken after the row's
+ * timing, as the machine's memory is shared (on this project's VM the same loop read 39 GB/s
+ * and 27 a few minutes apart). With more arrays the loop moves fewer bytes per ns (one Zen 5
+ * core: 48 GB/s over one input and one output, 39 over six and three, 33 over nine and
  * three), so the two-array figure of the machine is no bound a kernel of nine arrays can
  * reach; it stands in where there is no AVX2 or no memory for the arrays. */
-static double stream_bandwidth(bench_state *st, int k, int m, size_t n)
+static double row_bandwidth(bench_state *st, int k, int m, size_t n)
 {
     double best = 0.0;
-    if (n >= 8 && k + m <= PROBE_ARRAYS && probe_arrays(&st->probe, n) == 0)
+    if (bench_stream_avx2_supported() && n >= 8 && k + m <= PROBE_ARRAYS &&
+        probe_arrays(&st->probe, k + m, n) == 0)
         for (int r = 0; r < 3; r++) {
             double t = bench_stream_pass_avx2(st->probe.arrays, k, m, st->probe.n);
             double bandwidth = t > 0 ? (double)(k + m) * st->probe.n * sizeof(float) / t : 0.0;
@@ -451,7 +453,7 @@ static void roofline(bench_state *st, const sc_batch_entry *e, const bench_data 
     int k = inputs_read(e, s);
     double bytes = 4.0 * (k + e->n_out);
     int streaming = bytes * (double)d->n > 8.0 * (1 << 20);
-    double bandwidth = streaming ? stream_bandwidth(st, k, e->n_out, d->n) : 0.0;
+    double bandwidth = streaming ? row_bandwidth(st, k, e->n_out, d->n) : 0.0;
     double memory = bandwidth > 0 ? bytes / bandwidth : 0.0;
     r->roofline_ns = memory > compute ? memory : compute;
     r->roofline_fraction = r->roofline_ns / r->ns_per_elem;

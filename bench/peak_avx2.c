@@ -50,10 +50,10 @@ double bench_peak_avx2(void)
     return best;
 }
 
+int bench_stream_avx2_supported(void) { return __builtin_cpu_supports("avx2"); }
+
 double bench_stream_pass_avx2(float *const *arrays, int k, int m, size_t n)
 {
-    if (!__builtin_cpu_supports("avx2"))
-        return 0.0;
     double t0 = bench_now_ns();
     for (size_t i = 0; i + 8 <= n; i += 8) {
         __m256 sum = _mm256_load_ps(arrays[0] + i);
@@ -69,6 +69,7 @@ double bench_stream_pass_avx2(float *const *arrays, int k, int m, size_t n)
 }
 #else
 double bench_peak_avx2(void) { return 0.0; }
+int bench_stream_avx2_supported(void) { return 0; }
 double bench_stream_pass_avx2(float *const *arrays, int k, int m, size_t n)
 {
     (void)arrays, (void)k, (void)m, (void)n;
