@@ -867,6 +867,24 @@ static sc_batch_plan *shade_through_plan(const sc_scene *scene, const char *tier
     return plan;
 }
 
+/* a's inputs shaded through a plan of scene in every tier and instruction set: every output
+ * finite (what: the scene, for the message) */
+static void assert_plans_finite(const sc_scene *scene, plan_arrays *a, const char *what)
+{
+    for (int isa = 0; isa < SC_ISA_COUNT; isa++)
+        for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
+            sc_batch_plan *plan = shade_through_plan(scene, tiers[t], (sc_isa)isa, a);
+            for (size_t i = 0; i < N_PLAN; i++)
+                for (int c = 0; c < 3; c++)
+                    if (!isfinite(a->out[c][i]))
+                        fail_msg("%s %s %s point %zu (n %g,%g,%g v %g,%g,%g): %g", what, tiers[t],
+                                 sc_isa_name((sc_isa)isa), i, (double)a->in[0][i],
+                                 (double)a->in[1][i], (double)a->in[2][i], (double)a->in[3][i],
+                                 (double)a->in[4][i], (double)a->in[5][i], (double)a->out[c][i]);
+            sc_batch_plan_free(plan);
+        }
+}
+
 /* Normals within 3·10^-8 of a directional light's terminator (n·l of either sign), Beckmann
  * with Smith masking in every tier and instruction set: the fast tiers decide "lit" from n·l
  * of the loaded vectors, and their Λ once saw n·l <= 0 in such a lit lane and gave NaN
@@ -900,16 +918,7 @@ static void plans_at_the_terminator_are_finite(void **state)
     for (size_t m = 0; m < sizeof models / sizeof models[0]; m++) {
         sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
         assert_int_equal(sc_model_parse(models[m], &scene.model, err, sizeof err), 0);
-        for (int isa = 0; isa < SC_ISA_COUNT; isa++)
-            for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
-                sc_batch_plan *plan = shade_through_plan(&scene, tiers[t], (sc_isa)isa, &a);
-                for (size_t i = 0; i < N_PLAN; i++)
-                    for (int c = 0; c < 3; c++)
-                        if (!isfinite(a.out[c][i]))
-                            fail_msg("%s %s %s point %zu: %g", models[m], tiers[t],
-                                     sc_isa_name((sc_isa)isa), i, (double)a.out[c][i]);
-                sc_batch_plan_free(plan);
-            }
+        assert_plans_finite(&scene, &a, models[m]);
     }
     plan_arrays_free(&a);
 }
@@ -940,16 +949,7 @@ static void ggx_grazing_from_both_sides_is_finite(void **state)
     sc_scene scene = {&light, 1, {0}, {0.05, 0.05, 0.05}};
     assert_int_equal(
         sc_model_parse("cook-torrance alpha=0.3 f0=0.04", &scene.model, err, sizeof err), 0);
-    for (int isa = 0; isa < SC_ISA_COUNT; isa++)
-        for (int t = 0; t < N_TIERS && sc_isa_supported((sc_isa)isa); t++) {
-            sc_batch_plan *plan = shade_through_plan(&scene, tiers[t], (sc_isa)isa, &a);
-            for (size_t i = 0; i < N_PLAN; i++)
-                for (int c = 0; c < 3; c++)
-                    if (!isfinite(a.out[c][i]))
-                        fail_msg("%s %s point %zu (n·v %g): %g", tiers[t], sc_isa_name((sc_isa)isa),
-                                 i, (double)a.in[5][i], (double)a.out[c][i]);
-            sc_batch_plan_free(plan);
-        }
+    assert_plans_finite(&scene, &a, "ggx");
     plan_arrays_free(&a);
 }
 
