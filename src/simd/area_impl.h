@@ -153,8 +153,7 @@ static SC_INLINE v3 representative_term(int tier, sc_lobe lobe, const shade_vecs
         vf sp = vf_keep(lit, own_specular(tier, lobe, sv, n, v, ls, cos_s, nv, v3_dot(v, ls)));
         vf w = vf_mul(vf_mul(sp, energy_normalisation(lobe, sv, a, d)),
                       vf_mul(area_irradiance(kind, a, ls, c, dc, p, inside), vf_max(cos_s, zero)));
-        v3 ks = lv->spec;
-        out = (v3){vf_fma(ks.x, w, out.x), vf_fma(ks.y, w, out.y), vf_fma(ks.z, w, out.z)};
+        out = v3_fma_scalar(w, lv->spec, out);
     }
     return v3_select(vf_lt(zero, nv), out, (v3){zero, zero, zero});
 }

@@ -16,6 +16,12 @@ static SC_INLINE v3 v3_mul(v3 a, v3 b)
     return (v3){vf_mul(a.x, b.x), vf_mul(a.y, b.y), vf_mul(a.z, b.z)};
 }
 
+/* s a + b, an FMA per component */
+static SC_INLINE v3 v3_fma_scalar(vf s, v3 a, v3 b)
+{
+    return (v3){vf_fma(s, a.x, b.x), vf_fma(s, a.y, b.y), vf_fma(s, a.z, b.z)};
+}
+
 /* The constant factor own_specular leaves out: k of Blinn-Phong, α²/(2π) of GGX. */
 static SC_INLINE float lobe_factor(sc_lobe lobe, const sc_shade_uniforms *s)
 {
@@ -300,23 +306,16 @@ static SC_INLINE v3 light_term(int tier, sc_lobe lobe, const shade_vecs *c, ligh
         return (v3){vf_fma(f.x, e.x, acc.x), vf_fma(f.y, e.y, acc.y), vf_fma(f.z, e.z, acc.z)};
     }
     if (lobe == SC_LOBE_NONE) /* w (E ⊙ c_diff/π) */
-        return (v3){vf_fma(w, lv->diff.x, acc.x), vf_fma(w, lv->diff.y, acc.y),
-                    vf_fma(w, lv->diff.z, acc.z)};
+        return v3_fma_scalar(w, lv->diff, acc);
     vf fs = vf_keep(lit, own_specular(tier, lobe, c, n, v, l, nl, nv, vl));
-    if (lobe == SC_LOBE_BLINN) {
-        /* w (E ⊙ c_diff/π + f_s E ⊙ c_spec): six FMAs, a product fewer than the form below,
-         * for a lobe at most about 1 */
-        v3 f = {vf_fma(fs, lv->spec.x, lv->diff.x), vf_fma(fs, lv->spec.y, lv->diff.y),
-                vf_fma(fs, lv->spec.z, lv->diff.z)};
-        return (v3){vf_fma(w, f.x, acc.x), vf_fma(w, f.y, acc.y), vf_fma(w, f.z, acc.z)};
-    }
+    /* w (E ⊙ c_diff/π + f_s E ⊙ c_spec): six FMAs, a product fewer than the form below, for a
+     * lobe at most about 1 */
+    if (lobe == SC_LOBE_BLINN)
+        return v3_fma_scalar(w, v3_fma_scalar(fs, lv->spec, lv->diff), acc);
     /* w E ⊙ c_diff/π + (w f_s) E ⊙ c_spec: GGX's V grows as 1/(n·l + n·v) at grazing, where
      * f_s E ⊙ c_spec alone may exceed FLT_MAX, and w f_s = n·l f_s, n·l/(g_v + g_l) <= 1/α,
      * does not */
-    vf ws = vf_mul(w, fs);
-    return (v3){vf_fma(ws, lv->spec.x, vf_fma(w, lv->diff.x, acc.x)),
-                vf_fma(ws, lv->spec.y, vf_fma(w, lv->diff.y, acc.y)),
-                vf_fma(ws, lv->spec.z, vf_fma(w, lv->diff.z, acc.z))};
+    return v3_fma_scalar(vf_mul(w, fs), lv->spec, v3_fma_scalar(w, lv->diff, acc));
 }
 
 /* The shading equation for one vector of elements: count < 0, the generic loop over all the
